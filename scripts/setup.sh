@@ -1,0 +1,30 @@
+#!/usr/bin/env bash
+# Installs every Debian package roomscout needs (idempotent), then builds Release.
+# Usage: scripts/setup.sh [build-dir]     (default: build)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+packages=(
+  build-essential cmake pkg-config git ca-certificates
+  libeigen3-dev libopencv-dev libopencv-contrib-dev libpcl-dev
+  libyaml-cpp-dev nlohmann-json3-dev libcli11-dev libtbb-dev
+  libgtest-dev libgmock-dev libbenchmark-dev
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if ((${#missing[@]})); then
+  echo "setup: installing ${missing[*]}"
+  sudo_cmd=""
+  [ "$(id -u)" -eq 0 ] || sudo_cmd="sudo"
+  export DEBIAN_FRONTEND=noninteractive
+  $sudo_cmd apt-get update -q
+  $sudo_cmd apt-get install -y -q --no-install-recommends "${missing[@]}"
+fi
+
+build_dir="${1:-build}"
+jobs="$(nproc)"
+cmake -S . -B "$build_dir" -DCMAKE_BUILD_TYPE=Release -DROOMSCOUT_BUILD_TESTS=ON -DROOMSCOUT_BUILD_BENCHMARKS=ON
+cmake --build "$build_dir" -j "$jobs"

@@ -1,0 +1,78 @@
+#pragma once
+// The 2D occupancy grid every other map and strategy reads: log-odds per cell.
+
+#include <cstdint>
+#include <vector>
+
+#include "roomscout/core/grid_geometry.hpp"
+#include "roomscout/core/parameters.hpp"
+
+namespace roomscout {
+
+/// What is known of a cell.
+enum class CellState : std::uint8_t { kUnknown = 0, kFree = 1, kOccupied = 2 };
+
+/// Log-odds update and classification constants of an OccupancyGrid.
+struct OccupancyGridOptions {
+  double resolution_m = 0.05;          ///< cell side [m]
+  double log_odds_hit = 0.85;          ///< added on a beam end point (p = 0.70)
+  double log_odds_miss = -0.41;        ///< added on a cell a beam crossed (p = 0.40)
+  double log_odds_min = -2.0;          ///< clamp, so that a cell can change its mind
+  double log_odds_max = 3.5;           ///< clamp
+  double occupied_threshold = 0.62;    ///< log-odds above this: occupied (p > 0.65)
+  double free_threshold = -0.62;       ///< log-odds below this: free (p < 0.35; two misses)
+
+  /// Throws OptionError when a value is out of range.
+  void validate() const;
+  std::vector<ParameterRef> parameters();
+};
+
+/// A grid of log-odds occupancy values. Unknown cells hold exactly 0.
+/// Not thread-safe for concurrent writes; concurrent reads are fine.
+class OccupancyGrid {
+ public:
+  OccupancyGrid() = default;
+  OccupancyGrid(const GridGeometry& geometry, const OccupancyGridOptions& options = {});
+
+  const GridGeometry& geometry() const { return geometry_; }
+  const OccupancyGridOptions& options() const { return options_; }
+
+  CellState state(std::size_t index) const {
+    const float l = log_odds_[index];
+    if (l > occupied_threshold_) return CellState::kOccupied;
+    if (l < free_threshold_) return CellState::kFree;
+    return CellState::kUnknown;
+  }
+  CellState state(Cell c) const { return state(geometry_.index(c)); }
+  bool isFree(std::size_t index) const { return state(index) == CellState::kFree; }
+  bool isUnknown(std::size_t index) const { return state(index) == CellState::kUnknown; }
+  bool isOccupied(std::size_t index) const { return state(index) == CellState::kOccupied; }
+
+  float logOdds(std::size_t index) const { return log_odds_[index]; }
+  /// Occupancy probability in [0, 1].
+  double probability(std::size_t index) const;
+
+  /// Raw updates, clamped to the options' range.
+  void addHit(std::size_t index) { add(index, hit_); }
+  void addMiss(std::size_t index) { add(index, miss_); }
+  void setLogOdds(std::size_t index, float value);
+
+  /// Marks every cell with the given state (used to build grids from existing maps).
+  void setState(std::size_t index, CellState state);
+
+  /// Cell states as one byte per cell, row-major (for bulk analysis).
+  std::vector<CellState> states() const;
+
+ private:
+  void add(std::size_t index, float delta) {
+    float& l = log_odds_[index];
+    l = std::min(max_, std::max(min_, l + delta));
+  }
+
+  GridGeometry geometry_;
+  OccupancyGridOptions options_;
+  std::vector<float> log_odds_;
+  float hit_ = 0, miss_ = 0, min_ = 0, max_ = 0, occupied_threshold_ = 0, free_threshold_ = 0;
+};
+
+}  // namespace roomscout

@@ -1,0 +1,63 @@
+#pragma once
+// The interface every exploration strategy implements, and what it is given to decide.
+
+#include <string_view>
+#include <vector>
+
+#include "roomscout/core/geometry.hpp"
+#include "roomscout/core/occupancy_grid.hpp"
+#include "roomscout/core/parameters.hpp"
+#include "roomscout/planning/costmap.hpp"
+
+namespace roomscout {
+
+/// What a strategy sees when it decides: the current map, its costmap (updated from that map
+/// just before the call), the robot pose and the clock. Never ground truth.
+struct ExplorationInput {
+  const OccupancyGrid& grid;
+  const Costmap& costmap;
+  Pose2 robot;
+  double time_s = 0.0;  ///< time since the episode started [s] (simulated or wall clock)
+};
+
+/// The outcome of one decision. An expected outcome, not an error.
+struct Decision {
+  enum class Status {
+    kGoal,  ///< drive to `goal_m`
+    kDone,  ///< exploration is over: nothing reachable is left to explore
+  };
+  Status status = Status::kDone;
+  Vec2 goal_m = Vec2::Zero();
+
+  static Decision goal(const Vec2& goal_m) { return {Status::kGoal, goal_m}; }
+  static Decision done() { return {Status::kDone, Vec2::Zero()}; }
+};
+
+/// An exploration strategy: turns the map and pose into the next goal.
+///
+/// Contract, in call order:
+/// 1. parameters() may be edited, then validateOptions() is called once; both before decide().
+/// 2. decide() is called when the robot has no goal, when it reached or failed its goal, and
+///    every replanPeriod_s() while it drives (0 = only on those events). A returned goal is
+///    never inside an obstacle or the costmap's lethal inflation.
+/// 3. onGoalReached()/onGoalFailed() report what became of the goal last returned.
+/// Implementations are deterministic for a given seed and input sequence. Not thread-safe.
+class ExplorationStrategy {
+ public:
+  virtual ~ExplorationStrategy() = default;
+
+  virtual std::string_view name() const = 0;
+  virtual Decision decide(const ExplorationInput& input) = 0;
+  virtual void onGoalReached(const Vec2& /*goal_m*/) {}
+  /// The robot could not reach the goal (no path, no progress, or stuck).
+  virtual void onGoalFailed(const Vec2& /*goal_m*/) {}
+  /// Seconds between decisions while a goal is active; 0 means only on events.
+  virtual double replanPeriod_s() const { return 0.0; }
+
+  /// The strategy's tunable options, for configuration files and run records.
+  virtual std::vector<ParameterRef> parameters() { return {}; }
+  /// Throws OptionError when an option is out of range.
+  virtual void validateOptions() const {}
+};
+
+}  // namespace roomscout

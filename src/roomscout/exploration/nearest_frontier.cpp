@@ -1,0 +1,104 @@
+#include "roomscout/exploration/nearest_frontier.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+
+#include "roomscout/core/errors.hpp"
+#include "roomscout/exploration/frontier_search.hpp"
+
+namespace roomscout {
+
+void NearestFrontierOptions::validate() const {
+  if (!(potential_scale >= 0.0) || !(gain_scale >= 0.0)) {
+    throw OptionError("nearest_frontier: potential_scale and gain_scale must be >= 0");
+  }
+  if (!(min_frontier_size_m >= 0.0)) throw OptionError("nearest_frontier.min_frontier_size_m must be >= 0");
+  if (!(planner_period_s >= 0.0)) throw OptionError("nearest_frontier.planner_period_s must be >= 0");
+  if (!(progress_timeout_s > 0.0)) throw OptionError("nearest_frontier.progress_timeout_s must be > 0");
+  if (!(blacklist_radius_m >= 0.0)) throw OptionError("nearest_frontier.blacklist_radius_m must be >= 0");
+}
+
+std::vector<ParameterRef> NearestFrontierOptions::parameters() {
+  return {
+      {"potential_scale", &potential_scale, "weight of the distance to a frontier"},
+      {"gain_scale", &gain_scale, "weight of a frontier's size"},
+      {"min_frontier_size_m", &min_frontier_size_m, "smallest frontier considered [m]"},
+      {"planner_period_s", &planner_period_s, "seconds between re-decisions while driving"},
+      {"progress_timeout_s", &progress_timeout_s, "blacklist a goal after no progress for this long [s]"},
+      {"blacklist_radius_m", &blacklist_radius_m, "half-size of the box around a failed goal [m]"},
+  };
+}
+
+bool NearestFrontier::onBlacklist(const Vec2& p) const {
+  return std::any_of(blacklist_.begin(), blacklist_.end(), [&](const Vec2& b) {
+    return std::abs(b.x() - p.x()) < options_.blacklist_radius_m &&
+           std::abs(b.y() - p.y()) < options_.blacklist_radius_m;
+  });
+}
+
+namespace {
+
+/// explore_lite drives to the centroid and lets move_base find the nearest reachable spot.
+/// Our contract forbids goals in lethal cells, so take the centroid when it is traversable,
+/// else the member cell nearest to it that is.
+std::optional<Vec2> traversableTarget(const Frontier& f, const Costmap& costmap) {
+  const GridGeometry& g = costmap.geometry();
+  const Cell c = g.cellOf(f.centroid_m);
+  if (g.contains(c) && !costmap.isLethal(g.index(c))) return f.centroid_m;
+  std::optional<Vec2> best;
+  double best_d = std::numeric_limits<double>::infinity();
+  for (const Cell& m : f.cells) {
+    if (costmap.isLethal(g.index(m))) continue;
+    const Vec2 p = g.centerOf(m);
+    const double d = (p - f.centroid_m).squaredNorm();
+    if (d < best_d) {
+      best_d = d;
+      best = p;
+    }
+  }
+  return best;
+}
+
+}  // namespace
+
+Decision NearestFrontier::decide(const ExplorationInput& input) {
+  const double res = input.grid.geometry().resolution_m();
+  const auto min_cells = static_cast<std::size_t>(std::ceil(options_.min_frontier_size_m / res - 1e-9));
+  const std::vector<Frontier> frontiers =
+      searchFrontiers(input.grid, input.robot.position(), std::max<std::size_t>(1, min_cells));
+
+  const Frontier* best = nullptr;
+  Vec2 best_target = Vec2::Zero();
+  double best_cost = std::numeric_limits<double>::infinity();
+  for (const Frontier& f : frontiers) {
+    const double cost = options_.potential_scale * f.min_distance_m * res -
+                        options_.gain_scale * static_cast<double>(f.size()) * res;
+    if (cost >= best_cost) continue;
+    const std::optional<Vec2> target = traversableTarget(f, input.costmap);
+    if (!target || onBlacklist(*target)) continue;
+    best = &f;
+    best_cost = cost;
+    best_target = *target;
+  }
+  if (best == nullptr) return Decision::done();
+
+  // explore_lite's progress watchdog: a goal whose frontier does not come closer within
+  // progress_timeout_s is blacklisted and the next best is taken.
+  const bool same_goal = has_previous_ && (previous_goal_m_ - best_target).norm() < 1e-9;
+  if (!same_goal || previous_distance_m_ > best->min_distance_m) {
+    previous_goal_m_ = best_target;
+    previous_distance_m_ = best->min_distance_m;
+    last_progress_s_ = input.time_s;
+    has_previous_ = true;
+  }
+  if (input.time_s - last_progress_s_ > options_.progress_timeout_s) {
+    blacklist_.push_back(best_target);
+    has_previous_ = false;
+    return decide(input);
+  }
+  return Decision::goal(best_target);
+}
+
+}  // namespace roomscout

@@ -1,0 +1,49 @@
+#pragma once
+// explore_lite's greedy frontier exploration (Hörner, m-explore, 2016), the strategy most ROS
+// users run: go to the frontier of lowest cost
+//   cost = potential_scale * min_distance * resolution - gain_scale * size * resolution,
+// where min_distance [m] is the Euclidean distance to the frontier's nearest cell and size its
+// cell count. The extra resolution factor on both terms is explore_lite's own (so the size
+// term dominates at 0.05 m cells); we keep it to stay faithful.
+
+#include <vector>
+
+#include "roomscout/exploration/exploration_strategy.hpp"
+
+namespace roomscout {
+
+struct NearestFrontierOptions {
+  double potential_scale = 3.0;      ///< weight of the distance term (explore_lite default)
+  double gain_scale = 1.0;           ///< weight of the frontier size term (explore_lite default)
+  double min_frontier_size_m = 0.5;  ///< frontiers shorter than this are ignored [m]
+  double planner_period_s = 3.0;     ///< re-decision period, 1/planner_frequency (0.33 Hz)
+  double progress_timeout_s = 30.0;  ///< blacklist a goal after this long without progress [s]
+  double blacklist_radius_m = 0.25;  ///< goals within this box half-size of a failed one are
+                                     ///< skipped (explore_lite: 5 cells)
+  void validate() const;
+  std::vector<ParameterRef> parameters();
+};
+
+class NearestFrontier final : public ExplorationStrategy {
+ public:
+  explicit NearestFrontier(const NearestFrontierOptions& options = {}) : options_(options) {}
+
+  std::string_view name() const override { return "nearest_frontier"; }
+  Decision decide(const ExplorationInput& input) override;
+  void onGoalFailed(const Vec2& goal_m) override { blacklist_.push_back(goal_m); }
+  double replanPeriod_s() const override { return options_.planner_period_s; }
+  std::vector<ParameterRef> parameters() override { return options_.parameters(); }
+  void validateOptions() const override { options_.validate(); }
+
+ private:
+  bool onBlacklist(const Vec2& p) const;
+
+  NearestFrontierOptions options_;
+  std::vector<Vec2> blacklist_;
+  bool has_previous_ = false;
+  Vec2 previous_goal_m_ = Vec2::Zero();
+  double previous_distance_m_ = 0.0;
+  double last_progress_s_ = 0.0;
+};
+
+}  // namespace roomscout

@@ -1,0 +1,79 @@
+#include "roomscout/mapping/occupancy_mapper.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace roomscout {
+namespace {
+
+/// Visits the cells a segment crosses, from its start cell up to (excluding) its end cell,
+/// with Amanatides-Woo traversal; calls miss(index) on each cell inside the grid. Returns
+/// false when the segment leaves the grid.
+template <typename Miss>
+void traverse(const GridGeometry& g, const Vec2& from_m, const Vec2& to_m, Miss&& miss) {
+  const double res = g.resolution_m();
+  const Vec2 p0 = (from_m - g.origin_m()) / res;
+  const Vec2 p1 = (to_m - g.origin_m()) / res;
+  int x = static_cast<int>(std::floor(p0.x()));
+  int y = static_cast<int>(std::floor(p0.y()));
+  const int end_x = static_cast<int>(std::floor(p1.x()));
+  const int end_y = static_cast<int>(std::floor(p1.y()));
+  const Vec2 d = p1 - p0;
+  const int step_x = d.x() > 0 ? 1 : -1;
+  const int step_y = d.y() > 0 ? 1 : -1;
+  const double inf = std::numeric_limits<double>::infinity();
+  const double t_delta_x = d.x() != 0 ? std::abs(1.0 / d.x()) : inf;
+  const double t_delta_y = d.y() != 0 ? std::abs(1.0 / d.y()) : inf;
+  double t_max_x = d.x() != 0 ? ((step_x > 0 ? (x + 1 - p0.x()) : (p0.x() - x)) * t_delta_x) : inf;
+  double t_max_y = d.y() != 0 ? ((step_y > 0 ? (y + 1 - p0.y()) : (p0.y() - y)) * t_delta_y) : inf;
+  const int max_steps = std::abs(end_x - x) + std::abs(end_y - y) + 2;
+  for (int i = 0; i < max_steps; ++i) {
+    if (x == end_x && y == end_y) return;
+    if (x < 0 || y < 0 || x >= g.width() || y >= g.height()) return;
+    miss(static_cast<std::size_t>(y) * g.width() + x);
+    if (t_max_x < t_max_y) {
+      t_max_x += t_delta_x;
+      x += step_x;
+    } else {
+      t_max_y += t_delta_y;
+      y += step_y;
+    }
+  }
+}
+
+}  // namespace
+
+CellRect OccupancyMapper::integrate(const LaserScan& scan, const Pose2& T_map_sensor) {
+  const GridGeometry& g = grid_.geometry();
+  const Vec2 origin = T_map_sensor.position();
+  CellRect changed;
+  if (scan.ranges_m.empty()) return changed;
+  changed.expandToInclude(g.cellOf(origin));
+  for (std::size_t i = 0; i < scan.ranges_m.size(); ++i) {
+    const double r = scan.ranges_m[i];
+    const bool hit = std::isfinite(r) && r >= scan.range_min_m && r <= scan.range_max_m;
+    if (!hit && std::isfinite(r) && r < scan.range_min_m) continue;  // too close: no information
+    const double length = hit ? r : scan.range_max_m;
+    const double angle = T_map_sensor.yaw_rad + scan.angle_min_rad + i * scan.angle_increment_rad;
+    const Vec2 dir(std::cos(angle), std::sin(angle));
+    // A tiny step past the measured surface puts the end point inside the obstacle's cell.
+    const Vec2 end = origin + dir * (hit ? length + 1e-4 : length);
+    traverse(g, origin, end, [&](std::size_t index) { grid_.addMiss(index); });
+    const Cell end_cell = g.cellOf(end);
+    if (!g.contains(end_cell)) {
+      changed.expandToInclude({std::clamp(end_cell.x, 0, g.width() - 1),
+                               std::clamp(end_cell.y, 0, g.height() - 1)});
+      continue;
+    }
+    changed.expandToInclude(end_cell);
+    if (hit) {
+      grid_.addHit(g.index(end_cell));
+    } else {
+      grid_.addMiss(g.index(end_cell));
+    }
+  }
+  return changed;
+}
+
+}  // namespace roomscout

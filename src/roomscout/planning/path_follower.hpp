@@ -1,0 +1,60 @@
+#pragma once
+// Turns a path into velocity commands for a unicycle robot (pure pursuit with rotate-in-place).
+
+#include <vector>
+
+#include "roomscout/core/geometry.hpp"
+#include "roomscout/core/parameters.hpp"
+#include "roomscout/planning/path.hpp"
+
+namespace roomscout {
+
+struct PathFollowerOptions {
+  double max_linear_speed_mps = 0.22;   ///< TurtleBot3 Burger limit [m/s]
+  double max_angular_speed_radps = 2.84; ///< TurtleBot3 Burger limit [rad/s]
+  double lookahead_m = 0.35;            ///< pure-pursuit carrot distance along the path [m]
+  double goal_tolerance_m = 0.15;       ///< distance to the last waypoint that counts as reached [m]
+  double rotate_in_place_rad = 0.8;     ///< heading error above which the robot turns on the spot
+  double heading_gain = 2.5;            ///< angular speed per radian of heading error [1/s]
+  void validate() const;
+  std::vector<ParameterRef> parameters();
+};
+
+/// Linear and angular velocity command.
+struct VelocityCommand {
+  double linear_mps = 0.0;
+  double angular_radps = 0.0;
+};
+
+/// Follows one path at a time. Call setPath() for a new path, then compute() every control
+/// step; reached() tells when the robot is within goal_tolerance_m of the path's end.
+class PathFollower {
+ public:
+  /// Throws OptionError when `options` are invalid.
+  explicit PathFollower(const PathFollowerOptions& options = {});
+
+  void setPath(const Path& path);
+  void clear();
+  bool hasPath() const { return !path_.waypoints_m.empty(); }
+  const Path& path() const { return path_; }
+  /// Index of the waypoint nearest the robot that the follower has progressed to.
+  std::size_t progressIndex() const { return progress_; }
+
+  VelocityCommand compute(const Pose2& robot);
+  bool reached(const Pose2& robot) const;
+
+ private:
+  /// Moves the progress forward to the robot's projection on the path (never backwards).
+  void updateProgress(const Vec2& robot_m);
+  /// The point of the path at arc length `s_m` from its start.
+  Vec2 pointAt(double s_m) const;
+
+  PathFollowerOptions options_;
+  Path path_;
+  std::size_t progress_ = 0;
+  std::vector<double> arc_length_m_;  ///< arc length of each waypoint from the first [m]
+  std::size_t segment_ = 0;           ///< segment (from waypoint segment_) the robot is on
+  double progress_m_ = 0.0;           ///< arc length of the robot's projection on the path [m]
+};
+
+}  // namespace roomscout

@@ -1,0 +1,39 @@
+#pragma once
+// The ground truth that exploration is scored against, at the map's resolution: which cells
+// are truly free and reachable by the robot from its start (DESIGN: the opening of the free
+// space by the robot's disc, connected component of the start).
+
+#include <cstdint>
+#include <vector>
+
+#include "roomscout/core/occupancy_grid.hpp"
+#include "roomscout/sim/world_model.hpp"
+
+namespace roomscout::sim {
+
+class ExplorationTruth {
+ public:
+  /// @param map_geometry the grid the mapper fills; must share the raster's origin
+  /// @param robot_radius_m footprint radius used for the opening [m]
+  ExplorationTruth(const WorldModel& world, const GridGeometry& map_geometry, double robot_radius_m);
+
+  const GridGeometry& geometry() const { return geometry_; }
+  /// Map cells that are free in the ground truth (every raster cell they overlap is free).
+  const std::vector<std::uint8_t>& trulyFree() const { return truly_free_; }
+  /// Indices of the truly free cells the robot's disc can cover from the start.
+  const std::vector<std::uint32_t>& reachableCells() const { return reachable_; }
+  double reachableArea_m2() const;
+
+  /// Fraction of reachable cells that `grid` knows to be free, in [0, 1].
+  double explorationRate(const OccupancyGrid& grid) const;
+
+ private:
+  GridGeometry geometry_;
+  std::vector<std::uint8_t> truly_free_;
+  std::vector<std::uint32_t> reachable_;
+};
+
+/// The map grid matching a world: same origin as the raster, covering it, at `resolution_m`.
+GridGeometry mapGeometryFor(const WorldModel& world, double resolution_m);
+
+}  // namespace roomscout::sim

@@ -1,0 +1,43 @@
+#pragma once
+// Simulated 2D laser scanner (TurtleBot3's LDS-01 profile): ray casting against the world's
+// laser-plane raster, with optional Gaussian range noise.
+
+#include <cstdint>
+#include <random>
+
+#include "roomscout/core/laser_scan.hpp"
+#include "roomscout/core/parameters.hpp"
+#include "roomscout/sim/world_model.hpp"
+
+namespace roomscout::sim {
+
+struct LaserOptions {
+  int num_beams = 360;           ///< beams per revolution, evenly spaced over 360 degrees
+  double range_min_m = 0.12;     ///< closer returns are dropped [m]
+  double range_max_m = 3.5;      ///< no return beyond [m]
+  double rate_hz = 5.0;          ///< scans per second
+  double range_noise_m = 0.0;    ///< standard deviation of Gaussian range noise [m]
+  void validate() const;
+  std::vector<ParameterRef> parameters();
+};
+
+/// Casts one scan at a time. Deterministic for a given seed and call sequence.
+class LaserSimulator {
+ public:
+  LaserSimulator(const WorldModel& world, const LaserOptions& options, std::uint64_t seed);
+
+  const LaserOptions& options() const { return options_; }
+
+  /// A full scan from the sensor pose. Beams with no obstacle within range_max_m return +inf.
+  LaserScan scan(const Pose2& T_map_sensor);
+
+  /// Exact distance along a ray to the first laser-solid raster cell, or +inf beyond max_m.
+  double castRay(const Vec2& origin_m, double angle_rad, double max_m) const;
+
+ private:
+  const WorldModel& world_;
+  LaserOptions options_;
+  std::mt19937_64 rng_;
+};
+
+}  // namespace roomscout::sim

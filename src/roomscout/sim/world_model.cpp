@@ -1,0 +1,223 @@
+#include "roomscout/sim/world_model.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include <opencv2/imgproc.hpp>
+
+#include "roomscout/core/errors.hpp"
+
+namespace roomscout::sim {
+
+void WorldModelOptions::validate() const {
+  if (!(raster_resolution_m > 0.0)) throw OptionError("world.raster_resolution_m must be > 0");
+  if (!(laser_height_m > 0.0)) throw OptionError("world.laser_height_m must be > 0");
+  if (!(robot_height_m > 0.0)) throw OptionError("world.robot_height_m must be > 0");
+  if (!(robot_radius_m > 0.0)) throw OptionError("world.robot_radius_m must be > 0");
+}
+
+std::vector<ParameterRef> WorldModelOptions::parameters() {
+  return {
+      {"raster_resolution_m", &raster_resolution_m, "ground-truth raster cell of geometric worlds [m]"},
+      {"laser_height_m", &laser_height_m, "height of the 2D laser plane [m]"},
+      {"robot_height_m", &robot_height_m, "objects whose bottom is below this block the robot [m]"},
+      {"robot_radius_m", &robot_radius_m, "robot footprint radius [m]"},
+  };
+}
+
+namespace {
+
+/// Fills the raster cells whose centres lie inside `polygon_m` (even-odd rule), by scanlines
+/// through the cell centres. Exact for any simple or self-touching polygon.
+template <typename T>
+void fillPolygon(cv::Mat& raster, const GridGeometry& g, const Polygon& polygon_m, T value) {
+  const std::size_t n = polygon_m.size();
+  if (n < 3) return;
+  std::vector<Vec2> q(n);
+  double y_lo = std::numeric_limits<double>::infinity(), y_hi = -y_lo;
+  for (std::size_t i = 0; i < n; ++i) {
+    q[i] = (polygon_m[i] - g.origin_m()) / g.resolution_m();  // raster units, cell x spans [x, x+1)
+    y_lo = std::min(y_lo, q[i].y());
+    y_hi = std::max(y_hi, q[i].y());
+  }
+  const int row_lo = std::max(0, static_cast<int>(std::ceil(y_lo - 0.5)));
+  const int row_hi = std::min(raster.rows - 1, static_cast<int>(std::floor(y_hi - 0.5)));
+  std::vector<double> crossings;
+  for (int row = row_lo; row <= row_hi; ++row) {
+    const double yc = row + 0.5;
+    crossings.clear();
+    for (std::size_t i = 0, j = n - 1; i < n; j = i++) {
+      const Vec2& a = q[i];
+      const Vec2& b = q[j];
+      if ((a.y() > yc) != (b.y() > yc)) crossings.push_back(a.x() + (yc - a.y()) * (b.x() - a.x()) / (b.y() - a.y()));
+    }
+    std::sort(crossings.begin(), crossings.end());
+    T* out = raster.ptr<T>(row);
+    for (std::size_t k = 0; k + 1 < crossings.size(); k += 2) {
+      // cells whose centre x + 0.5 lies in [crossings[k], crossings[k+1])
+      const int x0 = std::max(0, static_cast<int>(std::ceil(crossings[k] - 0.5)));
+      const int x1 = std::min(raster.cols - 1, static_cast<int>(std::ceil(crossings[k + 1] - 0.5)) - 1);
+      for (int x = x0; x <= x1; ++x) out[x] = value;
+    }
+  }
+}
+
+Polygon wallRectangle(const Wall& w) {
+  const Vec2 d = w.b_m - w.a_m;
+  const double len = d.norm();
+  const Vec2 n = len > 0 ? Vec2(Vec2(-d.y(), d.x()) / len * (w.thickness_m * 0.5)) : Vec2(Vec2::Zero());
+  return {w.a_m - n, w.b_m - n, w.b_m + n, w.a_m + n};
+}
+
+bool spans(double z_min, double z_max, double z) { return z_min <= z && z <= z_max; }
+
+std::string formatPoint(const Vec2& p) {
+  std::ostringstream s;
+  s.precision(3);
+  s << "(" << p.x() << ", " << p.y() << ")";
+  return s.str();
+}
+
+}  // namespace
+
+WorldModel::WorldModel(const World& world, const WorldModelOptions& options)
+    : world_(world), options_(options) {
+  options_.validate();
+  if (world_.image) {
+    rasterizeImage();
+  } else {
+    rasterizeGeometry();
+  }
+  computeClearance();
+  chooseStart();
+}
+
+void WorldModel::rasterizeGeometry() {
+  if (world_.walls.empty()) throw InputError(world_.source, "the world has no walls");
+  const double res = options_.raster_resolution_m;
+  auto [lo, hi] = world_.bounds();
+  constexpr double kPad_m = 0.5;
+  // Origin on a multiple of 0.05 m so that map grids of 0.05/0.1 m align with the raster.
+  const Vec2 origin(std::floor((lo.x() - kPad_m) / 0.05) * 0.05, std::floor((lo.y() - kPad_m) / 0.05) * 0.05);
+  const int width = static_cast<int>(std::ceil((hi.x() + kPad_m - origin.x()) / res));
+  const int height = static_cast<int>(std::ceil((hi.y() + kPad_m - origin.y()) / res));
+  geometry_ = GridGeometry(origin, res, width, height);
+
+  cv::Mat laser = cv::Mat::zeros(height, width, CV_8U);
+  cv::Mat robot = cv::Mat::zeros(height, width, CV_8U);
+  auto add = [&](const Polygon& poly, double z_min, double z_max) {
+    if (spans(z_min, z_max, options_.laser_height_m)) fillPolygon<std::uint8_t>(laser, geometry_, poly, 1);
+    if (z_min < options_.robot_height_m) fillPolygon<std::uint8_t>(robot, geometry_, poly, 1);
+  };
+  for (const Wall& w : world_.walls) add(wallRectangle(w), w.z_min_m, w.z_max_m);
+  for (const FurniturePiece& f : world_.furniture) add(f.footprint_m, f.z_min_m, f.z_max_m);
+
+  cv::Mat rooms = cv::Mat::zeros(height, width, CV_32S);
+  for (const Room& r : world_.rooms) fillPolygon<std::int32_t>(rooms, geometry_, r.polygon_m, r.id);
+
+  laser_solid_.assign(laser.datastart, laser.dataend);
+  robot_solid_.assign(robot.datastart, robot.dataend);
+  room_labels_.assign(reinterpret_cast<const std::int32_t*>(rooms.datastart),
+                      reinterpret_cast<const std::int32_t*>(rooms.dataend));
+}
+
+void WorldModel::rasterizeImage() {
+  const ImageWorld& img = *world_.image;
+  if (img.solid.empty() || img.solid.type() != CV_8U) {
+    throw InputError(world_.source, "the world image is empty");
+  }
+  geometry_ = GridGeometry(img.origin_m, img.resolution_m, img.solid.cols, img.solid.rows);
+  cv::Mat solid;
+  cv::flip(img.solid, solid, 0);  // image row 0 is the top; grid row 0 is the bottom
+  cv::threshold(solid, solid, 0, 1, cv::THRESH_BINARY);
+  laser_solid_.assign(solid.datastart, solid.dataend);
+  robot_solid_ = laser_solid_;
+  room_labels_.assign(geometry_.cellCount(), 0);
+  if (!img.room_labels.empty()) {
+    cv::Mat labels;
+    cv::flip(img.room_labels, labels, 0);
+    room_labels_.assign(reinterpret_cast<const std::int32_t*>(labels.datastart),
+                        reinterpret_cast<const std::int32_t*>(labels.dataend));
+  }
+}
+
+void WorldModel::computeClearance() {
+  cv::Mat free_mask(geometry_.height(), geometry_.width(), CV_8U);
+  for (std::size_t i = 0; i < robot_solid_.size(); ++i) {
+    free_mask.data[i] = robot_solid_[i] ? 0 : 255;
+  }
+  // The border counts as solid so the robot never leaves the raster.
+  cv::rectangle(free_mask, cv::Rect(0, 0, free_mask.cols, free_mask.rows), cv::Scalar(0), 1);
+  cv::Mat dist;
+  cv::distanceTransform(free_mask, dist, cv::DIST_L2, cv::DIST_MASK_PRECISE, CV_32F);
+  const float res = static_cast<float>(geometry_.resolution_m());
+  clearance_m_.resize(geometry_.cellCount());
+  const float* d = dist.ptr<float>();
+  for (std::size_t i = 0; i < clearance_m_.size(); ++i) {
+    clearance_m_[i] = d[i] > 0.0f ? (d[i] - 0.5f) * res : 0.0f;
+  }
+}
+
+double WorldModel::clearance_m(const Vec2& p_m) const {
+  const Cell c = geometry_.cellOf(p_m);
+  return geometry_.contains(c) ? clearance_m_[geometry_.index(c)] : 0.0;
+}
+
+int WorldModel::roomAt(const Vec2& p_m) const {
+  const Cell c = geometry_.cellOf(p_m);
+  return geometry_.contains(c) ? room_labels_[geometry_.index(c)] : 0;
+}
+
+void WorldModel::chooseStart() {
+  const int w = geometry_.width(), h = geometry_.height();
+  cv::Mat free_mask(h, w, CV_8U);
+  for (std::size_t i = 0; i < robot_solid_.size(); ++i) {
+    free_mask.data[i] = (robot_solid_[i] || laser_solid_[i]) ? 0 : 255;
+  }
+  if (cv::countNonZero(free_mask) == 0) throw InputError(world_.source, "the world has no free space");
+
+  if (world_.start_given) {
+    start_ = world_.start;
+    const Vec2 p = start_.position();
+    if (!geometry_.contains(p)) {
+      throw InputError(world_.source, "start pose " + formatPoint(p) + " is outside the map");
+    }
+    if (!robotFits(p)) {
+      throw InputError(world_.source, "start pose " + formatPoint(p) +
+                                          " is inside or too close to a wall or furniture");
+    }
+  } else {
+    cv::Mat labels, stats, centroids;
+    const int n = cv::connectedComponentsWithStats(free_mask, labels, stats, centroids, 8, CV_32S);
+    int largest = 1;
+    for (int k = 2; k < n; ++k) {
+      if (stats.at<int>(k, cv::CC_STAT_AREA) > stats.at<int>(largest, cv::CC_STAT_AREA)) largest = k;
+    }
+    std::size_t best = 0;
+    float best_clearance = -1.0f;
+    const int* lab = labels.ptr<int>();
+    for (std::size_t i = 0; i < clearance_m_.size(); ++i) {
+      if (lab[i] == largest && clearance_m_[i] > best_clearance) {
+        best_clearance = clearance_m_[i];
+        best = i;
+      }
+    }
+    if (best_clearance < options_.robot_radius_m) {
+      throw InputError(world_.source, "no free place is wide enough for the robot (radius " +
+                                          std::to_string(options_.robot_radius_m) + " m)");
+    }
+    const Vec2 p = geometry_.centerOf(geometry_.cellAt(best));
+    start_ = Pose2{p.x(), p.y(), 0.0};
+  }
+
+  // Free floor connected to the start (4-neighbours).
+  cv::Mat mask = cv::Mat::zeros(h + 2, w + 2, CV_8U);
+  const Cell s = geometry_.cellOf(start_.position());
+  const int filled = cv::floodFill(free_mask, mask, cv::Point(s.x, s.y), cv::Scalar(128), nullptr,
+                                   cv::Scalar(0), cv::Scalar(0), 4 | cv::FLOODFILL_MASK_ONLY);
+  free_area_m2_ = filled * geometry_.resolution_m() * geometry_.resolution_m();
+}
+
+}  // namespace roomscout::sim

@@ -1,0 +1,70 @@
+// One simulated scan mapped into a grid, compared with the ground truth.
+
+#include <gtest/gtest.h>
+
+#include "roomscout/mapping/occupancy_mapper.hpp"
+#include "roomscout/sim/exploration_truth.hpp"
+#include "roomscout/sim/laser_simulator.hpp"
+#include "test_worlds.hpp"
+
+namespace roomscout::sim {
+namespace {
+
+TEST(OccupancyMapping, OneScanAgreesWithGroundTruthInRange) {
+  World w = testing::squareRoom(6.0, 0.2);
+  w.furniture.push_back({"cabinet", {{4.0, 4.0}, {4.8, 4.0}, {4.8, 4.5}, {4.0, 4.5}}, 0.0, 1.0});
+  w.furniture.push_back({"pillar", {{1.5, 2.0}, {1.8, 2.0}, {1.8, 2.3}, {1.5, 2.3}}, 0.0, 2.5});
+  const WorldModel model(w);
+  const GridGeometry geometry = mapGeometryFor(model, 0.05);
+  const ExplorationTruth truth(model, geometry, 0.105);
+  OccupancyGrid grid(geometry);
+  OccupancyMapper mapper(grid);
+  LaserSimulator laser(model, LaserOptions{}, 3);
+  const Pose2 pose{3.0, 3.0, 0.2};
+  // Two scans from the same pose: free cells need two misses by default.
+  for (int i = 0; i < 2; ++i) mapper.integrate(laser.scan(pose), pose);
+
+  std::size_t known = 0, agree = 0, free_in_range = 0, free_known = 0;
+  for (std::size_t i = 0; i < geometry.cellCount(); ++i) {
+    const CellState s = grid.state(i);
+    const bool truly_free = truth.trulyFree()[i] != 0;
+    if (s != CellState::kUnknown) {
+      ++known;
+      agree += (s == CellState::kFree) == truly_free ? 1 : 0;
+    }
+    const double d = (geometry.centerOf(geometry.cellAt(i)) - pose.position()).norm();
+    if (truly_free && d < 2.0) {
+      ++free_in_range;
+      free_known += s == CellState::kFree ? 1 : 0;
+    }
+  }
+  ASSERT_GT(known, 3000u);
+  EXPECT_GE(static_cast<double>(agree) / known, 0.99);
+  // Everything near the robot that is not in a shadow is mapped as free.
+  EXPECT_GE(static_cast<double>(free_known) / free_in_range, 0.95);
+  // The cabinet's near face (y = 4.0) is seen as occupied, the cell before it as free.
+  EXPECT_EQ(grid.state(geometry.cellOf({4.4, 4.01})), CellState::kOccupied);
+  EXPECT_EQ(grid.state(geometry.cellOf({4.4, 3.99})), CellState::kFree);
+}
+
+TEST(ExplorationTruth, TwoRoomsAreReachableThroughTheDoor) {
+  const WorldModel model(testing::twoRooms());
+  const ExplorationTruth truth(model, mapGeometryFor(model, 0.05), 0.105);
+  // Both rooms' free floor (about 2 x 5.8 x 4.8 m^2) minus the wall band is reachable.
+  EXPECT_NEAR(truth.reachableArea_m2(), 2 * 5.8 * 4.8, 2.0);
+  OccupancyGrid empty(truth.geometry());
+  EXPECT_EQ(truth.explorationRate(empty), 0.0);
+}
+
+TEST(ExplorationTruth, RoomBehindANarrowGapIsNotReachable) {
+  World w = testing::twoRooms();
+  // Narrow the door to 0.15 m: the robot (0.21 m wide) cannot pass.
+  w.walls[4].b_m = {6, 2.425};
+  w.walls[5].a_m = {6, 2.575};
+  const WorldModel model(w);
+  const ExplorationTruth truth(model, mapGeometryFor(model, 0.05), 0.105);
+  EXPECT_NEAR(truth.reachableArea_m2(), 5.8 * 4.8, 1.0);
+}
+
+}  // namespace
+}  // namespace roomscout::sim
