@@ -1,17 +1,184 @@
 // roomscout command line: one binary, one subcommand per job.
 
-#include <CLI/CLI.hpp>
-#include <iostream>
+#include <unistd.h>
 
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <iostream>
+#include <optional>
+#include <sstream>
+
+#include "roomscout/core/errors.hpp"
 #include "roomscout/exploration/strategy_registry.hpp"
+#include "roomscout/io/atomic_file.hpp"
+#include "roomscout/io/builtin_worlds.hpp"
+#include "roomscout/io/options_yaml.hpp"
+#include "roomscout/io/run_outputs.hpp"
+#include "roomscout/io/world_source.hpp"
+#include "roomscout/sim/episode.hpp"
+#include "roomscout/sim/world_model.hpp"
+
+namespace roomscout::cli {
+namespace {
+
+/// A one-line progress bar on a terminal; silent when stderr is not a terminal.
+class ProgressBar {
+ public:
+  explicit ProgressBar(std::string label) : label_(std::move(label)), enabled_(isatty(STDERR_FILENO) != 0) {}
+  void update(double time_s, double max_time_s, double rate) {
+    if (!enabled_) return;
+    const int width = 30;
+    const int filled = static_cast<int>(std::min(1.0, rate) * width);
+    std::fprintf(stderr, "\r%s [%.*s%*s] explored %5.1f %%  sim %6.0f s / %.0f s", label_.c_str(), filled,
+                 "##############################", width - filled, "", rate * 100.0, time_s, max_time_s);
+    std::fflush(stderr);
+    drawn_ = true;
+  }
+  ~ProgressBar() {
+    if (drawn_) std::fprintf(stderr, "\n");
+  }
+
+ private:
+  std::string label_;
+  bool enabled_;
+  bool drawn_ = false;
+};
+
+struct ExploreArgs {
+  std::string world;
+  std::string method = "nearest_frontier";
+  std::uint64_t seed = 1;
+  std::string out;
+  std::string config;
+  std::optional<double> max_time_s;
+  std::string start;
+  std::string room_labels;
+};
+
+Pose2 parseStart(const std::string& text) {
+  std::stringstream s(text);
+  Pose2 p;
+  char c1 = 0, c2 = 0;
+  if (!(s >> p.x_m >> c1 >> p.y_m >> c2 >> p.yaw_rad) || c1 != ',' || c2 != ',' || !s.eof() ||
+      !std::isfinite(p.x_m) || !std::isfinite(p.y_m) || !std::isfinite(p.yaw_rad)) {
+    throw OptionError("--start: expected X,Y,YAW (metres, metres, radians), got '" + text + "'");
+  }
+  return p;
+}
+
+int runExplore(const ExploreArgs& args) {
+  // Fail before simulating anything when the output cannot be written.
+  io::ensureWritableDirectory(args.out);
+
+  std::optional<std::filesystem::path> labels;
+  if (!args.room_labels.empty()) labels = args.room_labels;
+  sim::World world = io::loadWorld(args.world, labels);
+  if (!args.start.empty()) {
+    world.start = parseStart(args.start);
+    world.start_given = true;
+  }
+
+  sim::EpisodeConfig config;
+  std::unique_ptr<ExplorationStrategy> strategy = createStrategy(args.method, args.seed);
+  std::vector<ParameterGroup> groups = config.groups();
+  // Every method has a group of its own, so that one config file serves all methods.
+  std::vector<std::unique_ptr<ExplorationStrategy>> others;
+  for (const StrategyEntry& e : strategyRegistry()) {
+    if (e.name == args.method) {
+      groups.push_back({e.name, strategy->parameters()});
+    } else {
+      others.push_back(e.create(args.seed));
+      groups.push_back({e.name, others.back()->parameters()});
+    }
+  }
+  if (!args.config.empty()) io::applyConfigFile(args.config, groups);
+  if (args.max_time_s) config.episode.max_time_s = *args.max_time_s;
+  config.resolve();
+  config.validate();
+  strategy->validateOptions();
+
+  const sim::WorldModel model(world, config.world);
+  sim::EpisodeResult result;
+  {
+    ProgressBar bar(world.name + " " + args.method);
+    result = sim::runEpisode(model, config, *strategy, args.seed,
+                             [&](double t, double max_t, double rate) { bar.update(t, max_t, rate); });
+  }
+
+  io::RunInfo info{world.name, world.source, args.method, args.seed, {}};
+  for (const ParameterGroup& g : config.groups()) info.options[g.name] = io::parametersToJson(g.parameters);
+  info.options[args.method] = io::parametersToJson(strategy->parameters());
+  io::writeRunOutputs(args.out, info, result);
+
+  auto fmt = [](const std::optional<double>& v, const char* unit) {
+    if (!v) return std::string("never");
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.1f %s", *v, unit);
+    return std::string(buf);
+  };
+  std::printf("%s %s seed %llu: explored %.1f %%, T98 %s, L98 %s, done %s, %d revisits, %.2f s wall -> %s\n",
+              world.name.c_str(), args.method.c_str(), static_cast<unsigned long long>(args.seed),
+              result.exploration_rate * 100.0, fmt(result.t98_s, "s").c_str(), fmt(result.l98_m, "m").c_str(),
+              result.timed_out ? "timed out" : fmt(result.t_done_s, "s").c_str(), result.revisits,
+              result.wall_time_s, args.out.c_str());
+  return 0;
+}
+
+int runWorlds() {
+  std::printf("%-16s %10s %6s  %s\n", "world", "free m^2", "rooms", "description");
+  for (const std::string& name : io::builtinWorldNames()) {
+    const sim::World world = io::loadBuiltinWorld(name);
+    const sim::WorldModel model(world);
+    std::printf("%-16s %10.1f %6zu  %s\n", name.c_str(), model.freeArea_m2(), world.rooms.size(),
+                world.description.c_str());
+  }
+  return 0;
+}
+
+}  // namespace
+}  // namespace roomscout::cli
 
 int main(int argc, char** argv) {
+  using namespace roomscout;
   CLI::App app{"roomscout: semantic-region-aware exploration of indoor buildings"};
   app.require_subcommand(1);
-  auto* methods = app.add_subcommand("methods", "List the exploration methods");
-  methods->callback([] {
-    for (const auto& e : roomscout::strategyRegistry()) std::cout << e.name << "\t" << e.description << "\n";
-  });
-  CLI11_PARSE(app, argc, argv);
+
+  cli::ExploreArgs explore;
+  auto* explore_cmd = app.add_subcommand("explore", "Explore one world with one method and write its maps");
+  explore_cmd->add_option("--world", explore.world, "built-in world name, world YAML, or map_server YAML")->required();
+  explore_cmd->add_option("--method", explore.method, "exploration method (see `roomscout methods`)")
+      ->capture_default_str();
+  explore_cmd->add_option("--seed", explore.seed, "seed of every random choice")->capture_default_str();
+  explore_cmd->add_option("--out", explore.out, "output directory")->required();
+  explore_cmd->add_option("--config", explore.config, "YAML file of options, grouped as in metrics.json");
+  explore_cmd->add_option("--max-time", explore.max_time_s, "simulated time limit [s]");
+  explore_cmd->add_option("--start", explore.start, "start pose X,Y,YAW [m, m, rad] for map_server worlds");
+  explore_cmd->add_option("--room-labels", explore.room_labels, "room label image for a map_server world");
+
+  auto* worlds_cmd = app.add_subcommand("worlds", "List the built-in worlds");
+  auto* methods_cmd = app.add_subcommand("methods", "List the exploration methods");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  }
+  try {
+    if (explore_cmd->parsed()) return cli::runExplore(explore);
+    if (worlds_cmd->parsed()) return cli::runWorlds();
+    if (methods_cmd->parsed()) {
+      for (const StrategyEntry& e : strategyRegistry()) std::printf("%-18s %s\n", e.name.c_str(), e.description.c_str());
+      return 0;
+    }
+  } catch (const InputError& e) {
+    std::fprintf(stderr, "roomscout: error: %s\n", e.what());
+    return 2;
+  } catch (const OptionError& e) {
+    std::fprintf(stderr, "roomscout: error: %s\n", e.what());
+    return 2;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "roomscout: internal error: %s\n", e.what());
+    return 1;
+  }
   return 0;
 }

@@ -1,0 +1,77 @@
+// Whole episodes: exploration of the built-in worlds and determinism.
+
+#include "roomscout/sim/episode.hpp"
+
+#include <gtest/gtest.h>
+
+#include "roomscout/exploration/strategy_registry.hpp"
+#include "roomscout/io/builtin_worlds.hpp"
+#include "test_worlds.hpp"
+
+namespace roomscout::sim {
+namespace {
+
+EpisodeResult explore(const World& world, const std::string& method, std::uint64_t seed) {
+  EpisodeConfig config;
+  config.resolve();
+  const WorldModel model(world, config.world);
+  auto strategy = createStrategy(method, seed);
+  return runEpisode(model, config, *strategy, seed);
+}
+
+class BuiltinWorldExploration : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(BuiltinWorldExploration, NearestFrontierExploresAtLeast98Percent) {
+  const EpisodeResult r = explore(io::loadBuiltinWorld(GetParam()), "nearest_frontier", 1);
+  EXPECT_GE(r.exploration_rate, 0.98);
+  ASSERT_TRUE(r.t98_s.has_value());
+  ASSERT_TRUE(r.l98_m.has_value());
+  EXPECT_FALSE(r.timed_out);
+  ASSERT_TRUE(r.t_done_s.has_value());
+  EXPECT_LE(*r.t98_s, *r.t_done_s);
+  EXPECT_LE(*r.l98_m, r.length_m + 1e-9);
+  // The curve is sampled every simulated second and never decreases by much (log-odds may
+  // flip a few cells back to unknown).
+  ASSERT_GT(r.curve.size(), 10u);
+  for (std::size_t i = 1; i < r.curve.size(); ++i) {
+    EXPECT_GE(r.curve[i].rate, r.curve[i - 1].rate - 0.01);
+    EXPECT_GE(r.curve[i].length_m, r.curve[i - 1].length_m);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Worlds, BuiltinWorldExploration,
+                         ::testing::Values("small_house", "medium_house", "large_office"));
+
+TEST(Episode, SameSeedSameMetrics) {
+  const World world = io::loadBuiltinWorld("small_house");
+  const EpisodeResult a = explore(world, "nearest_frontier", 5);
+  const EpisodeResult b = explore(world, "nearest_frontier", 5);
+  EXPECT_EQ(a.exploration_rate, b.exploration_rate);
+  EXPECT_EQ(a.t98_s, b.t98_s);
+  EXPECT_EQ(a.l98_m, b.l98_m);
+  EXPECT_EQ(a.t_done_s, b.t_done_s);
+  EXPECT_EQ(a.revisits, b.revisits);
+  ASSERT_EQ(a.trajectory.size(), b.trajectory.size());
+  for (std::size_t i = 0; i < a.trajectory.size(); ++i) {
+    EXPECT_EQ(a.trajectory[i].pose.x_m, b.trajectory[i].pose.x_m);
+    EXPECT_EQ(a.trajectory[i].pose.y_m, b.trajectory[i].pose.y_m);
+  }
+}
+
+TEST(Episode, ClosedRoomEndsCleanly) {
+  // A closed 4 x 4 m room: once it is mapped no frontier is left and the strategy ends.
+  const EpisodeResult r = explore(testing::squareRoom(4.0, 0.2), "nearest_frontier", 1);
+  EXPECT_TRUE(r.t_done_s.has_value());
+  EXPECT_FALSE(r.timed_out);
+  EXPECT_GE(r.exploration_rate, 0.98);
+  EXPECT_LT(*r.t_done_s, 120.0);
+}
+
+TEST(Episode, TwoRoomsAreBothExploredAndCounted) {
+  const EpisodeResult r = explore(testing::twoRooms(), "nearest_frontier", 1);
+  EXPECT_GE(r.exploration_rate, 0.98);
+  EXPECT_EQ(r.rooms_entered, 2);
+}
+
+}  // namespace
+}  // namespace roomscout::sim
