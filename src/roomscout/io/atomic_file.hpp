@@ -1,0 +1,32 @@
+#pragma once
+// Whole-file reads and crash-safe whole-file writes: a reader never sees a half-written file.
+
+#include <filesystem>
+#include <string>
+#include <string_view>
+
+#include <opencv2/core/mat.hpp>
+
+namespace roomscout::io {
+
+/// Replaces `path` with `bytes` atomically: writes a temporary file in the same directory,
+/// fsyncs it and renames it over `path`. An existing file keeps its permission bits.
+/// On any failure throws InputError(path, "cannot write: <reason>"), leaves no temporary file
+/// behind and leaves the old content of `path` (if any) untouched.
+void writeFileAtomic(const std::filesystem::path& path, std::string_view bytes);
+
+/// Encodes `image` in the format of `path`'s extension (.png, .pgm, .jpg, ...) with
+/// cv::imencode and writes it with writeFileAtomic. Throws InputError when the image cannot
+/// be encoded (empty image, unknown extension) or written.
+void writeImageAtomic(const std::filesystem::path& path, const cv::Mat& image);
+
+/// Creates `directory` (and its parents) if needed and checks that files can be created in
+/// it by creating and removing a probe file. Throws InputError(directory, problem) when it
+/// exists but is not a directory, cannot be created, or is not writable.
+void ensureWritableDirectory(const std::filesystem::path& directory);
+
+/// Reads a whole file. Throws InputError(path, "file not found") when it does not exist and
+/// InputError(path, "cannot read: <reason>") when it cannot be read (e.g. it is a directory).
+std::string readFile(const std::filesystem::path& path);
+
+}  // namespace roomscout::io

@@ -1,0 +1,122 @@
+#include "roomscout/io/options_yaml.hpp"
+
+#include <set>
+#include <type_traits>
+#include <utility>
+#include <variant>
+
+#include "roomscout/core/errors.hpp"
+#include "roomscout/io/atomic_file.hpp"
+#include "roomscout/io/yaml_support.hpp"
+
+namespace roomscout::io {
+namespace {
+
+/// A converted value waiting to be stored, so that a bad value later in the map leaves every
+/// parameter unchanged.
+using PendingValue = std::variant<double, int, bool, std::string>;
+
+PendingValue convert(const ParameterRef& param, const YAML::Node& value, const std::string& where) {
+  const auto fail = [&](const std::string& expected) -> void {
+    throw OptionError(where + ": expected " + expected + ", got " + describeYamlNode(value));
+  };
+  return std::visit(
+      [&](auto* storage) -> PendingValue {
+        using T = std::remove_pointer_t<decltype(storage)>;
+        if constexpr (std::is_same_v<T, double>) {
+          const std::optional<double> v = yamlDouble(value);
+          if (!v) fail("a finite number");
+          return *v;
+        } else if constexpr (std::is_same_v<T, int>) {
+          const std::optional<int> v = yamlInt(value);
+          if (!v) fail("an integer");
+          return *v;
+        } else if constexpr (std::is_same_v<T, bool>) {
+          const std::optional<bool> v = yamlBool(value);
+          if (!v) fail("true or false");
+          return *v;
+        } else {
+          if (!value.IsScalar()) fail("a string");
+          return value.Scalar();
+        }
+      },
+      param.value);
+}
+
+}  // namespace
+
+void applyParameters(const YAML::Node& node, std::vector<ParameterRef> params,
+                     const std::string& context) {
+  const std::string prefix = context.empty() ? "" : context + ": ";
+  const auto place = [&](const std::string& key) {
+    return context.empty() ? key : context + "." + key;
+  };
+  if (!node.IsDefined() || node.IsNull()) return;
+  if (!node.IsMap()) {
+    throw OptionError(prefix + "expected a map of options, got " + describeYamlNode(node));
+  }
+  std::vector<std::string_view> known;
+  for (const ParameterRef& p : params) known.push_back(p.name);
+
+  std::vector<std::pair<const ParameterRef*, PendingValue>> pending;
+  std::set<std::string> seen;
+  for (const auto& entry : node) {
+    if (!entry.first.IsScalar()) {
+      throw OptionError(prefix + "option names must be plain names, got " +
+                        describeYamlNode(entry.first));
+    }
+    const std::string key = entry.first.Scalar();
+    const ParameterRef* param = nullptr;
+    for (const ParameterRef& p : params) {
+      if (p.name == key) param = &p;
+    }
+    if (param == nullptr) {
+      throw OptionError(prefix + "unknown option '" + key + "' (known: " + joinNames(known) + ")");
+    }
+    if (!seen.insert(key).second) throw OptionError(place(key) + ": given twice");
+    pending.emplace_back(param, convert(*param, entry.second, place(key)));
+  }
+  for (const auto& [param, value] : pending) {
+    std::visit(
+        [&](auto* storage) {
+          using T = std::remove_pointer_t<decltype(storage)>;
+          *storage = std::get<T>(value);
+        },
+        param->value);
+  }
+}
+
+nlohmann::json parametersToJson(const std::vector<ParameterRef>& params) {
+  nlohmann::json out = nlohmann::json::object();
+  for (const ParameterRef& p : params) {
+    std::visit([&](auto* storage) { out[std::string(p.name)] = *storage; }, p.value);
+  }
+  return out;
+}
+
+void applyConfigFile(const std::filesystem::path& path, std::vector<ParameterGroup>& groups) {
+  const std::string source = path.string();
+  const YAML::Node root = parseYaml(readFile(path), source);
+  if (!root.IsDefined() || root.IsNull()) return;
+  std::vector<std::string> names;
+  for (const ParameterGroup& g : groups) names.push_back(g.name);
+  if (!root.IsMap()) {
+    throw InputError(source, "expected a map of option groups (" + joinNames(names) + "), got " +
+                                 describeYamlNode(root));
+  }
+  std::set<std::string> seen;
+  for (const auto& entry : root) {
+    const std::string key = entry.first.IsScalar() ? entry.first.Scalar() : "?";
+    ParameterGroup* group = nullptr;
+    for (ParameterGroup& g : groups) {
+      if (g.name == key) group = &g;
+    }
+    if (group == nullptr) {
+      throw OptionError(source + ": unknown group '" + key + "' (known: " + joinNames(names) + ")");
+    }
+    if (!seen.insert(key).second) throw OptionError(source + ": group '" + key + "' given twice");
+    applyParameters(entry.second, group->parameters, source + ": " + group->name);
+  }
+}
+
+}  // namespace roomscout::io

@@ -1,0 +1,35 @@
+#pragma once
+// Options from YAML and to JSON through the core's ParameterRef reflection: unknown keys and
+// ill-typed values are rejected with messages naming the option and the bad value.
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <yaml-cpp/yaml.h>
+#include <nlohmann/json.hpp>
+
+#include "roomscout/core/parameters.hpp"
+
+namespace roomscout::io {
+
+/// Sets parameters from a YAML map {name: value}. `context` prefixes messages (e.g. "laser").
+/// An empty node (null) sets nothing. Throws OptionError when the node is not a map
+/// ("<context>: expected a map of options ..."), a key is unknown ("<context>: unknown option
+/// 'foo' (known: a, b, c)"), given twice, or its value does not convert to the parameter's
+/// type ("<context>.num_beams: expected an integer, got 'abc'"). Doubles must be finite.
+/// Nothing is changed unless every value is valid.
+void applyParameters(const YAML::Node& node, std::vector<ParameterRef> params,
+                     const std::string& context);
+
+/// The parameters' current values as a JSON object {name: value}.
+nlohmann::json parametersToJson(const std::vector<ParameterRef>& params);
+
+/// Applies a config file whose top-level keys are group names, each holding a map of that
+/// group's options. YAML syntax errors throw InputError(path, "line N: ..."); a top level that
+/// is not a map throws InputError; an unknown group throws OptionError listing the groups;
+/// option errors are prefixed with the path ("cfg.yaml: laser.num_beams: ...").
+/// An empty file changes nothing.
+void applyConfigFile(const std::filesystem::path& path, std::vector<ParameterGroup>& groups);
+
+}  // namespace roomscout::io

@@ -1,0 +1,121 @@
+#include "roomscout/io/run_outputs.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+#include <opencv2/imgproc.hpp>
+
+#include "roomscout/io/atomic_file.hpp"
+#include "roomscout/io/map_server.hpp"
+
+namespace roomscout::io {
+namespace {
+
+nlohmann::json optionalNumber(const std::optional<double>& v) {
+  return v ? nlohmann::json(*v) : nlohmann::json(nullptr);
+}
+
+nlohmann::json timing(const sim::TimingStats& s) {
+  return {{"median", s.median_ms}, {"p95", s.p95_ms}, {"count", s.count}};
+}
+
+std::string trajectoryCsv(const sim::EpisodeResult& result) {
+  std::string out = "time_s,x_m,y_m,yaw_rad\n";
+  char line[128];
+  for (const sim::TrajectorySample& s : result.trajectory) {
+    std::snprintf(line, sizeof line, "%.2f,%.4f,%.4f,%.4f\n", s.time_s, s.pose.x_m, s.pose.y_m,
+                  s.pose.yaw_rad);
+    out += line;
+  }
+  return out;
+}
+
+}  // namespace
+
+nlohmann::json metricsJson(const RunInfo& info, const sim::EpisodeResult& r) {
+  nlohmann::json curve = nlohmann::json::array();
+  for (const sim::CurveSample& c : r.curve) curve.push_back({c.time_s, c.length_m, c.rate});
+  return {
+      {"world", info.world},
+      {"world_source", info.world_source},
+      {"method", info.method},
+      {"seed", info.seed},
+      {"exploration_rate", r.exploration_rate},
+      {"t98_s", optionalNumber(r.t98_s)},
+      {"l98_m", optionalNumber(r.l98_m)},
+      {"t_done_s", optionalNumber(r.t_done_s)},
+      {"l_done_m", optionalNumber(r.l_done_m)},
+      {"timed_out", r.timed_out},
+      {"sim_time_s", r.sim_time_s},
+      {"length_m", r.length_m},
+      {"max_time_s", r.max_time_s},
+      {"reachable_area_m2", r.reachable_area_m2},
+      {"revisits", r.revisits},
+      {"rooms_entered", r.rooms_entered},
+      {"goals", r.goals},
+      {"goal_failures", r.goal_failures},
+      {"recoveries", r.recoveries},
+      {"wall_time_s", r.wall_time_s},
+      {"update_ms",
+       {{"occupancy", timing(r.occupancy_update)},
+        {"costmap", timing(r.costmap_update)},
+        {"decision", timing(r.decision)}}},
+      {"curve_columns", {"time_s", "length_m", "rate"}},
+      {"curve", curve},
+      {"options", info.options},
+  };
+}
+
+cv::Mat renderRun(const sim::EpisodeResult& result) {
+  const OccupancyGrid& grid = result.map;
+  const GridGeometry& g = grid.geometry();
+  const int scale = std::max(1, std::min(4, 1200 / std::max(1, std::max(g.width(), g.height()))));
+  cv::Mat image(g.height(), g.width(), CV_8UC3);
+  for (int y = 0; y < g.height(); ++y) {
+    cv::Vec3b* row = image.ptr<cv::Vec3b>(g.height() - 1 - y);
+    for (int x = 0; x < g.width(); ++x) {
+      switch (grid.state(Cell{x, y})) {
+        case CellState::kFree:
+          row[x] = {255, 255, 255};
+          break;
+        case CellState::kOccupied:
+          row[x] = {0, 0, 0};
+          break;
+        case CellState::kUnknown:
+          row[x] = {205, 205, 205};
+          break;
+      }
+    }
+  }
+  cv::resize(image, image, {}, scale, scale, cv::INTER_NEAREST);
+  auto toPixel = [&](const Pose2& p) {
+    const double px = (p.x_m - g.origin_m().x()) / g.resolution_m() * scale;
+    const double py = (g.height() - (p.y_m - g.origin_m().y()) / g.resolution_m()) * scale;
+    return cv::Point(static_cast<int>(std::lround(px)), static_cast<int>(std::lround(py)));
+  };
+  for (std::size_t i = 1; i < result.trajectory.size(); ++i) {
+    cv::line(image, toPixel(result.trajectory[i - 1].pose), toPixel(result.trajectory[i].pose),
+             cv::Scalar(200, 90, 20), std::max(1, scale / 2), cv::LINE_AA);
+  }
+  if (!result.trajectory.empty()) {
+    const int r = 3 * scale;
+    cv::circle(image, toPixel(result.trajectory.front().pose), r, cv::Scalar(40, 170, 40),
+               cv::FILLED, cv::LINE_AA);
+    cv::circle(image, toPixel(result.trajectory.back().pose), r, cv::Scalar(30, 30, 220),
+               cv::FILLED, cv::LINE_AA);
+  }
+  return image;
+}
+
+void writeRunOutputs(const std::filesystem::path& directory, const RunInfo& info,
+                     const sim::EpisodeResult& result) {
+  ensureWritableDirectory(directory);
+  saveOccupancyMap(result.map, directory / "occupancy.yaml");
+  writeFileAtomic(directory / "trajectory.csv", trajectoryCsv(result));
+  writeImageAtomic(directory / "run.png", renderRun(result));
+  // metrics.json last: its presence says the run's outputs are complete.
+  writeFileAtomic(directory / "metrics.json", metricsJson(info, result).dump(2) + "\n");
+}
+
+}  // namespace roomscout::io

@@ -1,0 +1,50 @@
+#include "roomscout/io/builtin_worlds.hpp"
+
+#include <algorithm>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "roomscout/core/errors.hpp"
+#include "test_support.hpp"
+
+namespace roomscout::io {
+namespace {
+
+using test::Contains;
+
+TEST(BuiltinWorlds, NamesMatchTheEmbeddedFilesAndAreSorted) {
+  const std::vector<std::string> names = builtinWorldNames();
+  ASSERT_EQ(names.size(), embeddedWorlds().size());
+  EXPECT_TRUE(std::is_sorted(names.begin(), names.end()));
+  for (const std::string& name : names) EXPECT_TRUE(isBuiltinWorld(name)) << name;
+  EXPECT_FALSE(isBuiltinWorld("no_such_world"));
+  EXPECT_FALSE(isBuiltinWorld(""));
+}
+
+TEST(BuiltinWorlds, EveryEmbeddedWorldParses) {
+  for (const std::string& name : builtinWorldNames()) {
+    SCOPED_TRACE(name);
+    try {
+      const sim::World world = loadBuiltinWorld(name);
+      EXPECT_EQ(world.source, "builtin:" + name);
+      EXPECT_TRUE(world.start_given);
+    } catch (const InputError& e) {
+      ADD_FAILURE() << e.what();
+    }
+  }
+}
+
+TEST(BuiltinWorlds, UnknownNameListsTheKnownOnes) {
+  try {
+    loadBuiltinWorld("atlantis");
+    FAIL() << "accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.source(), "builtin:atlantis");
+    EXPECT_TRUE(Contains(e.what(), "builtin:atlantis: no such built-in world (known: "));
+    for (const std::string& name : builtinWorldNames()) EXPECT_TRUE(Contains(e.what(), name));
+  }
+}
+
+}  // namespace
+}  // namespace roomscout::io
