@@ -15,7 +15,9 @@ enum class CellState : std::uint8_t { kUnknown = 0, kFree = 1, kOccupied = 2 };
 /// Log-odds update and classification constants of an OccupancyGrid.
 struct OccupancyGridOptions {
   double resolution_m = 0.05;          ///< cell side [m]
-  double log_odds_hit = 0.85;          ///< added on a beam end point (p = 0.70)
+  double log_odds_hit = 1.6;           ///< added on a beam end point (p = 0.83): a hit outweighs
+                                       ///< four misses, so wall-face cells that grazing beams
+                                       ///< cross stay occupied instead of flickering to unknown
   double log_odds_miss = -0.41;        ///< added on a cell a beam crossed (p = 0.40)
   double log_odds_min = -2.0;          ///< clamp, so that a cell can change its mind
   double log_odds_max = 3.5;           ///< clamp

@@ -56,6 +56,7 @@ nlohmann::json metricsJson(const RunInfo& info, const sim::EpisodeResult& r) {
       {"goals", r.goals},
       {"goal_failures", r.goal_failures},
       {"recoveries", r.recoveries},
+      {"stalls", r.stalls},
       {"wall_time_s", r.wall_time_s},
       {"update_ms",
        {{"occupancy", timing(r.occupancy_update)},

@@ -11,11 +11,11 @@
 namespace roomscout {
 
 struct CostmapOptions {
-  double robot_radius_m = 0.105;       ///< TurtleBot3 Burger footprint radius [m]
-  double inflation_margin_m = 0.05;    ///< extra lethal clearance beyond the radius [m]
-  double cost_scaling_distance_m = 0.35; ///< clearance [m] under which the soft cost rises
-  double max_soft_cost = 8.0;          ///< soft cost at the lethal boundary (per cell step)
-  double unknown_cost = 1.0;           ///< extra cost of stepping into unknown space (per cell)
+  double robot_radius_m = 0.105;          ///< TurtleBot3 Burger footprint radius [m]
+  double inflation_margin_m = 0.05;       ///< extra lethal clearance beyond the radius [m]
+  double cost_scaling_distance_m = 0.35;  ///< clearance [m] under which the soft cost rises
+  double max_soft_cost = 8.0;             ///< soft cost at the lethal boundary (per cell step)
+  double unknown_cost = 1.0;              ///< extra cost of stepping into unknown space (per cell)
 
   /// Lethal clearance: a cell centre closer than this to an occupied cell centre is lethal [m].
   double lethalRadius_m() const { return robot_radius_m + inflation_margin_m; }
@@ -38,7 +38,9 @@ class Costmap {
   const CostmapOptions& options() const { return options_; }
 
   bool isLethal(std::size_t index) const { return lethal_[index] != 0; }
-  bool isLethal(Cell c) const { return geometry_.contains(c) ? isLethal(geometry_.index(c)) : true; }
+  bool isLethal(Cell c) const {
+    return geometry_.contains(c) ? isLethal(geometry_.index(c)) : true;
+  }
   bool isUnknown(std::size_t index) const { return unknown_[index] != 0; }
   /// Cost of entering the cell, >= 1 for traversable cells (meaningless when lethal).
   float stepCost(std::size_t index) const { return step_cost_[index]; }

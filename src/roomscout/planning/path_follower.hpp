@@ -10,12 +10,12 @@
 namespace roomscout {
 
 struct PathFollowerOptions {
-  double max_linear_speed_mps = 0.22;   ///< TurtleBot3 Burger limit [m/s]
-  double max_angular_speed_radps = 2.84; ///< TurtleBot3 Burger limit [rad/s]
-  double lookahead_m = 0.35;            ///< pure-pursuit carrot distance along the path [m]
-  double goal_tolerance_m = 0.15;       ///< distance to the last waypoint that counts as reached [m]
-  double rotate_in_place_rad = 0.8;     ///< heading error above which the robot turns on the spot
-  double heading_gain = 2.5;            ///< angular speed per radian of heading error [1/s]
+  double max_linear_speed_mps = 0.22;     ///< TurtleBot3 Burger limit [m/s]
+  double max_angular_speed_radps = 2.84;  ///< TurtleBot3 Burger limit [rad/s]
+  double lookahead_m = 0.35;              ///< pure-pursuit carrot distance along the path [m]
+  double goal_tolerance_m = 0.15;    ///< distance to the last waypoint that counts as reached [m]
+  double rotate_in_place_rad = 0.8;  ///< heading error above which the robot turns on the spot
+  double heading_gain = 2.5;         ///< angular speed per radian of heading error [1/s]
   void validate() const;
   std::vector<ParameterRef> parameters();
 };
@@ -46,8 +46,9 @@ class PathFollower {
  private:
   /// Moves the progress forward to the robot's projection on the path (never backwards).
   void updateProgress(const Vec2& robot_m);
-  /// The point of the path at arc length `s_m` from its start.
-  Vec2 pointAt(double s_m) const;
+  /// Pure-pursuit target: the first point along the path beyond the progress that lies
+  /// lookahead_m from the robot, or the path's end.
+  Vec2 carrot(const Vec2& robot_m) const;
 
   PathFollowerOptions options_;
   Path path_;

@@ -22,6 +22,9 @@ void EpisodeOptions::validate() const {
   if (!(stuck_timeout_s > 0.0) || !(no_progress_timeout_s > 0.0) || !(recovery_time_s >= 0.0)) {
     throw OptionError("episode: timeouts must be > 0");
   }
+  if (!(stall_timeout_s > 0.0) || !(stall_radius_m >= 0.0)) {
+    throw OptionError("episode: stall_timeout_s must be > 0 and stall_radius_m >= 0");
+  }
   if (!(room_dwell_s >= 0.0)) throw OptionError("episode.room_dwell_s must be >= 0");
   if (max_decisions_per_step < 1) throw OptionError("episode.max_decisions_per_step must be >= 1");
 }
@@ -35,6 +38,8 @@ std::vector<ParameterRef> EpisodeOptions::parameters() {
       {"stuck_timeout_s", &stuck_timeout_s, "blocked this long triggers a recovery [s]"},
       {"no_progress_timeout_s", &no_progress_timeout_s, "no progress this long fails the goal [s]"},
       {"recovery_time_s", &recovery_time_s, "duration of a back-off recovery [s]"},
+      {"stall_timeout_s", &stall_timeout_s, "no new map and little motion this long fails the goal [s]"},
+      {"stall_radius_m", &stall_radius_m, "motion radius under which the robot counts as stalled [m]"},
       {"room_dwell_s", &room_dwell_s, "time in a room before it counts as entered [s]"},
       {"max_decisions_per_step", &max_decisions_per_step, "failed goals tried in a row before waiting"},
   };
@@ -187,6 +192,11 @@ EpisodeResult runEpisode(const WorldModel& world, EpisodeConfig config, Explorat
   int candidate_room = current_room;
   double candidate_since_s = 0.0;
   std::unordered_set<int> visited_rooms;
+  // Stall watchdog window: rate and position at its start, farthest excursion since.
+  double stall_window_start_s = 0.0;
+  double stall_window_rate = 0.0;
+  Vec2 stall_window_position = robot.pose().position();
+  double stall_window_excursion_m = 0.0;
   if (current_room != 0) visited_rooms.insert(current_room);
 
   auto failGoal = [&]() {
@@ -237,6 +247,21 @@ EpisodeResult runEpisode(const WorldModel& world, EpisodeConfig config, Explorat
       sampleMetrics();
       next_metrics_s += opt.metrics_period_s;
       if (progress) progress(t, max_time_s, rate);
+      // A strategy that flips between goals without seeing anything new, while the robot
+      // dithers in one place, is stalled: its current goal fails (explore_lite's own
+      // watchdog only catches a goal that stays the same).
+      stall_window_excursion_m =
+          std::max(stall_window_excursion_m, (robot.pose().position() - stall_window_position).norm());
+      if (t - stall_window_start_s >= opt.stall_timeout_s) {
+        if (goal && rate - stall_window_rate < 0.001 && stall_window_excursion_m < opt.stall_radius_m) {
+          ++result.stalls;
+          failGoal();
+        }
+        stall_window_start_s = t;
+        stall_window_rate = rate;
+        stall_window_position = robot.pose().position();
+        stall_window_excursion_m = 0.0;
+      }
     }
 
     // 2. A path through newly seen obstacles is replanned; failing that, the goal fails.

@@ -29,6 +29,9 @@ struct EpisodeOptions {
   double stuck_timeout_s = 2.0;        ///< commanded motion blocked this long: recovery [s]
   double no_progress_timeout_s = 45.0; ///< path to the goal not shrinking this long: goal failed [s]
   double recovery_time_s = 1.5;        ///< how long a recovery backs off [s]
+  double stall_timeout_s = 60.0;       ///< window of the stall watchdog [s]
+  double stall_radius_m = 4.0;         ///< a robot that stayed within this radius of where the
+                                       ///< window began, while the rate grew < 0.1 %, is stalled [m]
   double room_dwell_s = 2.0;           ///< time inside a room before it counts as entered [s]
   int max_decisions_per_step = 8;      ///< failed goals tried in a row before waiting a second
   void validate() const;
@@ -90,6 +93,7 @@ struct EpisodeResult {
   int goals = 0;
   int goal_failures = 0;
   int recoveries = 0;
+  int stalls = 0;                  ///< goals failed by the stall watchdog
   double wall_time_s = 0.0;
   TimingStats occupancy_update;    ///< per scan: ray tracing into the grid
   TimingStats costmap_update;      ///< per decision
