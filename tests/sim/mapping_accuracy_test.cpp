@@ -68,3 +68,26 @@ TEST(ExplorationTruth, RoomBehindANarrowGapIsNotReachable) {
 
 }  // namespace
 }  // namespace roomscout::sim
+
+namespace roomscout::sim {
+namespace {
+
+TEST(ExplorationRateCounter, IncrementalRateEqualsFullRecount) {
+  const WorldModel model(testing::twoRooms());
+  const GridGeometry geometry = mapGeometryFor(model, 0.05);
+  const ExplorationTruth truth(model, geometry, 0.105);
+  OccupancyGrid grid(geometry);
+  OccupancyMapper mapper(grid);
+  LaserSimulator laser(model, LaserOptions{}, 3);
+  ExplorationRateCounter counter(truth);
+  for (const Pose2& pose : {Pose2{2.0, 2.5, 0.0}, Pose2{5.0, 2.5, 0.0}, Pose2{7.0, 2.5, 0.0}, Pose2{10.0, 1.0, 0.0}}) {
+    CellRect changed;
+    for (int i = 0; i < 2; ++i) changed.unite(mapper.integrate(laser.scan(pose), pose));
+    counter.update(grid, changed);
+    EXPECT_DOUBLE_EQ(counter.rate(), truth.explorationRate(grid));
+  }
+  EXPECT_GT(counter.rate(), 0.9);
+}
+
+}  // namespace
+}  // namespace roomscout::sim

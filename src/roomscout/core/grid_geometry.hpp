@@ -21,6 +21,10 @@ struct CellRect {
   int min_x = 0, min_y = 0, max_x = 0, max_y = 0;
   bool empty() const { return min_x >= max_x || min_y >= max_y; }
   void expandToInclude(Cell c);
+  /// Grows to cover `other` too (an empty rectangle changes nothing).
+  void unite(const CellRect& other);
+  /// The part inside [0, width) x [0, height).
+  CellRect clippedTo(int width, int height) const;
 };
 
 /// Geometry of a grid: cell (0,0) has its lower-left corner at `origin_m`.

@@ -1,7 +1,6 @@
 #include "roomscout/exploration/frontier_search.hpp"
 
 #include <cmath>
-#include <deque>
 #include <limits>
 #include <optional>
 
@@ -39,24 +38,29 @@ std::vector<Frontier> searchFrontiers(const OccupancyGrid& grid, const Vec2& fro
 
   const int w = g.width();
   const int h = g.height();
-  std::vector<std::uint8_t> visited(g.cellCount(), 0);
-  std::vector<std::uint8_t> frontier_flag(g.cellCount(), 0);
+  // One byte per cell: bit 0 free, bit 1 unknown, bit 2 visited, bit 3 frontier.
+  constexpr std::uint8_t kFree = 1, kUnknown = 2, kVisited = 4, kFrontier = 8;
+  std::vector<std::uint8_t> flags(g.cellCount());
+  for (std::size_t i = 0; i < flags.size(); ++i) {
+    const CellState s = grid.state(i);
+    flags[i] = s == CellState::kFree ? kFree : (s == CellState::kUnknown ? kUnknown : 0);
+  }
   auto isNewFrontierCell = [&](int x, int y) {
     const std::size_t i = static_cast<std::size_t>(y) * w + x;
-    if (frontier_flag[i] || !grid.isUnknown(i)) return false;
-    return (x > 0 && grid.isFree(i - 1)) || (x + 1 < w && grid.isFree(i + 1)) ||
-           (y > 0 && grid.isFree(i - w)) || (y + 1 < h && grid.isFree(i + w));
+    if ((flags[i] & (kUnknown | kFrontier)) != kUnknown) return false;
+    return (x > 0 && (flags[i - 1] & kFree)) || (x + 1 < w && (flags[i + 1] & kFree)) ||
+           (y > 0 && (flags[i - w] & kFree)) || (y + 1 < h && (flags[i + w] & kFree));
   };
 
+  std::vector<Cell> queue;
   auto buildFrontier = [&](int x0, int y0) {
     Frontier f;
-    std::deque<Cell> queue{{x0, y0}};
-    frontier_flag[static_cast<std::size_t>(y0) * w + x0] = 1;
+    queue.assign(1, Cell{x0, y0});
+    flags[static_cast<std::size_t>(y0) * w + x0] |= kFrontier;
     Vec2 sum = Vec2::Zero();
     f.min_distance_m = std::numeric_limits<double>::infinity();
-    while (!queue.empty()) {
-      const Cell c = queue.front();
-      queue.pop_front();
+    for (std::size_t head = 0; head < queue.size(); ++head) {
+      const Cell c = queue[head];
       f.cells.push_back(c);
       const Vec2 p = g.centerOf(c);
       sum += p;
@@ -70,7 +74,7 @@ std::vector<Frontier> searchFrontiers(const OccupancyGrid& grid, const Vec2& fro
           const int nx = c.x + dx, ny = c.y + dy;
           if ((dx == 0 && dy == 0) || nx < 0 || ny < 0 || nx >= w || ny >= h) continue;
           if (isNewFrontierCell(nx, ny)) {
-            frontier_flag[static_cast<std::size_t>(ny) * w + nx] = 1;
+            flags[static_cast<std::size_t>(ny) * w + nx] |= kFrontier;
             queue.push_back({nx, ny});
           }
         }
@@ -80,19 +84,18 @@ std::vector<Frontier> searchFrontiers(const OccupancyGrid& grid, const Vec2& fro
     return f;
   };
 
-  std::deque<std::size_t> bfs{*start};
-  visited[*start] = 1;
-  while (!bfs.empty()) {
-    const std::size_t i = bfs.front();
-    bfs.pop_front();
+  std::vector<std::size_t> bfs{*start};
+  flags[*start] |= kVisited;
+  for (std::size_t head = 0; head < bfs.size(); ++head) {
+    const std::size_t i = bfs[head];
     const int x = static_cast<int>(i % w), y = static_cast<int>(i / w);
     const int nbr[4][2] = {{x - 1, y}, {x + 1, y}, {x, y - 1}, {x, y + 1}};
     for (const auto& n : nbr) {
       if (n[0] < 0 || n[1] < 0 || n[0] >= w || n[1] >= h) continue;
       const std::size_t j = static_cast<std::size_t>(n[1]) * w + n[0];
-      if (grid.isFree(j)) {
-        if (!visited[j]) {
-          visited[j] = 1;
+      if (flags[j] & kFree) {
+        if (!(flags[j] & kVisited)) {
+          flags[j] |= kVisited;
           bfs.push_back(j);
         }
       } else if (isNewFrontierCell(n[0], n[1])) {

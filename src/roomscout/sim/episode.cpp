@@ -158,6 +158,8 @@ EpisodeResult runEpisode(const WorldModel& world, EpisodeConfig config, Explorat
 
   const GridGeometry map_geometry = mapGeometryFor(world, config.mapping.resolution_m);
   const ExplorationTruth truth(world, map_geometry, config.robot.radius_m);
+  ExplorationRateCounter rate_counter(truth);
+  CellRect changed_since_sample;
   OccupancyGrid grid(map_geometry, config.mapping);
   OccupancyMapper mapper(grid);
   LaserSimulator laser(world, config.laser, seed ^ 0x9E3779B97F4A7C15ull);
@@ -222,7 +224,9 @@ EpisodeResult runEpisode(const WorldModel& world, EpisodeConfig config, Explorat
     map_changed_since_costmap = false;
   };
   auto sampleMetrics = [&]() {
-    rate = truth.explorationRate(grid);
+    rate_counter.update(grid, changed_since_sample);
+    changed_since_sample = CellRect{};
+    rate = rate_counter.rate();
     result.curve.push_back({t, robot.odometer_m(), rate});
     if (!result.t98_s && rate >= opt.completion_rate) {
       result.t98_s = t;
@@ -236,7 +240,7 @@ EpisodeResult runEpisode(const WorldModel& world, EpisodeConfig config, Explorat
     if (t >= next_scan_s - 1e-9) {
       const LaserScan scan = laser.scan(robot.pose());
       const auto start = Clock::now();
-      mapper.integrate(scan, robot.pose());
+      changed_since_sample.unite(mapper.integrate(scan, robot.pose()));
       occupancy_ms.push_back(msSince(start));
       next_scan_s += scan_period_s;
       map_changed_since_costmap = true;

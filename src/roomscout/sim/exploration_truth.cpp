@@ -111,4 +111,30 @@ double ExplorationTruth::explorationRate(const OccupancyGrid& grid) const {
   return static_cast<double>(known) / static_cast<double>(reachable_.size());
 }
 
+ExplorationRateCounter::ExplorationRateCounter(const ExplorationTruth& truth)
+    : truth_(truth), reachable_(truth.geometry().cellCount(), 0), counted_(truth.geometry().cellCount(), 0) {
+  for (std::uint32_t i : truth.reachableCells()) reachable_[i] = 1;
+}
+
+void ExplorationRateCounter::update(const OccupancyGrid& grid, const CellRect& changed) {
+  const GridGeometry& g = truth_.geometry();
+  const CellRect r = changed.clippedTo(g.width(), g.height());
+  for (int y = r.min_y; y < r.max_y; ++y) {
+    std::size_t i = g.index({r.min_x, y});
+    for (int x = r.min_x; x < r.max_x; ++x, ++i) {
+      if (!reachable_[i]) continue;
+      const std::uint8_t now = grid.isFree(i) ? 1 : 0;
+      if (now != counted_[i]) {
+        known_free_ = now ? known_free_ + 1 : known_free_ - 1;
+        counted_[i] = now;
+      }
+    }
+  }
+}
+
+double ExplorationRateCounter::rate() const {
+  const std::size_t n = truth_.reachableCells().size();
+  return n == 0 ? 0.0 : static_cast<double>(known_free_) / static_cast<double>(n);
+}
+
 }  // namespace roomscout::sim

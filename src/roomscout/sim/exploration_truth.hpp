@@ -33,6 +33,24 @@ class ExplorationTruth {
   std::vector<std::uint32_t> reachable_;
 };
 
+/// The exploration rate kept up to date from the map's changed rectangles, so that sampling
+/// it costs the size of what changed rather than of the whole building.
+class ExplorationRateCounter {
+ public:
+  explicit ExplorationRateCounter(const ExplorationTruth& truth);
+  /// Recounts the cells of `changed` (cells outside it must not have changed since the last
+  /// call).
+  void update(const OccupancyGrid& grid, const CellRect& changed);
+  /// Same value as ExplorationTruth::explorationRate() on the grid last passed to update().
+  double rate() const;
+
+ private:
+  const ExplorationTruth& truth_;
+  std::vector<std::uint8_t> reachable_;  ///< 1 for reachable cells
+  std::vector<std::uint8_t> counted_;    ///< 1 for reachable cells counted as known free
+  std::size_t known_free_ = 0;
+};
+
 /// The map grid matching a world: same origin as the raster, covering it, at `resolution_m`.
 GridGeometry mapGeometryFor(const WorldModel& world, double resolution_m);
 
