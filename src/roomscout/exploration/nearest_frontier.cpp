@@ -17,7 +17,7 @@ void NearestFrontierOptions::validate() const {
   if (!(min_frontier_size_m >= 0.0)) throw OptionError("nearest_frontier.min_frontier_size_m must be >= 0");
   if (!(planner_period_s >= 0.0)) throw OptionError("nearest_frontier.planner_period_s must be >= 0");
   if (!(progress_timeout_s > 0.0)) throw OptionError("nearest_frontier.progress_timeout_s must be > 0");
-  if (!(min_goal_distance_m >= 0.0)) throw OptionError("nearest_frontier.min_goal_distance_m must be >= 0");
+  if (!(max_centroid_offset_m > 0.0)) throw OptionError("nearest_frontier.max_centroid_offset_m must be > 0");
   if (!(blacklist_radius_m >= 0.0)) throw OptionError("nearest_frontier.blacklist_radius_m must be >= 0");
 }
 
@@ -29,7 +29,8 @@ std::vector<ParameterRef> NearestFrontierOptions::parameters() {
       {"planner_period_s", &planner_period_s, "seconds between re-decisions while driving"},
       {"progress_timeout_s", &progress_timeout_s, "blacklist a goal after no progress for this long [s]"},
       {"blacklist_radius_m", &blacklist_radius_m, "half-size of the box around a failed goal [m]"},
-      {"min_goal_distance_m", &min_goal_distance_m, "a centroid closer than this to the robot is replaced [m]"},
+      {"max_centroid_offset_m", &max_centroid_offset_m,
+       "a centroid farther than this from its frontier is replaced by the cell nearest the robot [m]"},
   };
 }
 
@@ -43,24 +44,28 @@ bool NearestFrontier::onBlacklist(const Vec2& p) const {
 namespace {
 
 /// explore_lite drives to the frontier's centroid and lets move_base find the nearest
-/// reachable spot. Our contract forbids goals in lethal cells, and a ring-shaped frontier
-/// (the robot in open space) has its centroid under the robot, where explore_lite stalls
-/// until its progress timeout. So: the centroid when it is traversable and at least
-/// `min_goal_distance_m` from the robot, else the frontier's traversable cell nearest to the
-/// robot.
+/// reachable spot. Two departures keep that from stalling here:
+/// - our contract forbids goals in lethal cells, so a lethal centroid is replaced by the
+///   traversable member cell nearest to it;
+/// - an arc- or ring-shaped frontier (the robot in open space) has its centroid far from the
+///   frontier itself, often under the robot, where explore_lite dithers until its progress
+///   timeout; when the centroid is farther than `max_centroid_offset_m` from every member
+///   cell, the traversable member nearest the robot is the goal instead.
 std::optional<Vec2> traversableTarget(const Frontier& f, const Costmap& costmap, const Vec2& robot,
-                                      double min_goal_distance_m) {
+                                      double max_centroid_offset_m) {
   const GridGeometry& g = costmap.geometry();
+  double offset2 = std::numeric_limits<double>::infinity();
+  for (const Cell& m : f.cells) offset2 = std::min(offset2, (g.centerOf(m) - f.centroid_m).squaredNorm());
+  const bool ring = offset2 > max_centroid_offset_m * max_centroid_offset_m;
   const Cell c = g.cellOf(f.centroid_m);
-  if (g.contains(c) && !costmap.isLethal(g.index(c)) && (f.centroid_m - robot).norm() >= min_goal_distance_m) {
-    return f.centroid_m;
-  }
+  if (!ring && g.contains(c) && !costmap.isLethal(g.index(c))) return f.centroid_m;
+  const Vec2 reference = ring ? robot : f.centroid_m;
   std::optional<Vec2> best;
   double best_d = std::numeric_limits<double>::infinity();
   for (const Cell& m : f.cells) {
     if (costmap.isLethal(g.index(m))) continue;
     const Vec2 p = g.centerOf(m);
-    const double d = (p - robot).squaredNorm();
+    const double d = (p - reference).squaredNorm();
     if (d < best_d) {
       best_d = d;
       best = p;
@@ -84,7 +89,7 @@ Decision NearestFrontier::decide(const ExplorationInput& input) {
     const double cost = options_.potential_scale * f.min_distance_m * res -
                         options_.gain_scale * static_cast<double>(f.size()) * res;
     if (cost >= best_cost) continue;
-    const std::optional<Vec2> target = traversableTarget(f, input.costmap, input.robot.position(), options_.min_goal_distance_m);
+    const std::optional<Vec2> target = traversableTarget(f, input.costmap, input.robot.position(), options_.max_centroid_offset_m);
     if (!target || onBlacklist(*target)) continue;
     best = &f;
     best_cost = cost;

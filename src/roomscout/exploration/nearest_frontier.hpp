@@ -20,9 +20,10 @@ struct NearestFrontierOptions {
   double progress_timeout_s = 30.0;  ///< blacklist a goal after this long without progress [s]
   double blacklist_radius_m = 0.25;  ///< goals within this box half-size of a failed one are
                                      ///< skipped (explore_lite: 5 cells)
-  double min_goal_distance_m = 0.5;  ///< a centroid this close to the robot (a ring-shaped
-                                     ///< frontier) is replaced by the frontier's nearest cell;
-                                     ///< explore_lite has no such rule and stalls there
+  double max_centroid_offset_m = 1.0; ///< a centroid farther than this from every cell of its
+                                      ///< frontier (an arc or ring around the robot) is replaced
+                                      ///< by the cell nearest the robot; explore_lite has no
+                                      ///< such rule and dithers in open space
   void validate() const;
   std::vector<ParameterRef> parameters();
 };

@@ -157,7 +157,9 @@ EpisodeResult runEpisode(const WorldModel& world, EpisodeConfig config, Explorat
   const EpisodeOptions& opt = config.episode;
 
   const GridGeometry map_geometry = mapGeometryFor(world, config.mapping.resolution_m);
-  const ExplorationTruth truth(world, map_geometry, config.robot.radius_m);
+  // Reachable = what the robot's navigation footprint (radius plus the planner's safety
+  // margin) can cover: gaps the planner may never pass do not count as explorable.
+  const ExplorationTruth truth(world, map_geometry, config.costmap.lethalRadius_m());
   ExplorationRateCounter rate_counter(truth);
   CellRect changed_since_sample;
   OccupancyGrid grid(map_geometry, config.mapping);
