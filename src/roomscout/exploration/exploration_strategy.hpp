@@ -11,6 +11,8 @@
 
 namespace roomscout {
 
+class SemanticMap;
+
 /// What a strategy sees when it decides: the current map, its costmap (updated from that map
 /// just before the call), the robot pose and the clock. Never ground truth.
 struct ExplorationInput {
@@ -18,6 +20,7 @@ struct ExplorationInput {
   const Costmap& costmap;
   Pose2 robot;
   double time_s = 0.0;  ///< time since the episode started [s] (simulated or wall clock)
+  const SemanticMap* semantic = nullptr;  ///< rooms of the current map, when one is built
 };
 
 /// The outcome of one decision. An expected outcome, not an error.

@@ -34,6 +34,10 @@ std::string trajectoryCsv(const sim::EpisodeResult& result) {
 }  // namespace
 
 nlohmann::json metricsJson(const RunInfo& info, const sim::EpisodeResult& r) {
+  nlohmann::json update_ms = {{"occupancy", timing(r.occupancy_update)},
+                              {"costmap", timing(r.costmap_update)},
+                              {"decision", timing(r.decision)}};
+  for (const auto& [name, stats] : r.map_updates) update_ms[name] = timing(stats);
   nlohmann::json curve = nlohmann::json::array();
   for (const sim::CurveSample& c : r.curve) curve.push_back({c.time_s, c.length_m, c.rate});
   return {
@@ -58,10 +62,7 @@ nlohmann::json metricsJson(const RunInfo& info, const sim::EpisodeResult& r) {
       {"recoveries", r.recoveries},
       {"stalls", r.stalls},
       {"wall_time_s", r.wall_time_s},
-      {"update_ms",
-       {{"occupancy", timing(r.occupancy_update)},
-        {"costmap", timing(r.costmap_update)},
-        {"decision", timing(r.decision)}}},
+      {"update_ms", update_ms},
       {"curve_columns", {"time_s", "length_m", "rate"}},
       {"curve", curve},
       {"options", info.options},

@@ -149,7 +149,8 @@ double remainingLength(const Path& path, std::size_t from, const Vec2& robot) {
 }  // namespace
 
 EpisodeResult runEpisode(const WorldModel& world, EpisodeConfig config, ExplorationStrategy& strategy,
-                         std::uint64_t seed, const EpisodeProgress& progress) {
+                         std::uint64_t seed, const EpisodeProgress& progress,
+                         const std::vector<EpisodeObserver*>& observers) {
   const auto wall_start = Clock::now();
   config.resolve();
   config.validate();
@@ -180,6 +181,10 @@ EpisodeResult runEpisode(const WorldModel& world, EpisodeConfig config, Explorat
   const double horizon_m = config.laser.range_max_m + config.costmap.lethalRadius_m() + 0.5;
 
   std::vector<double> occupancy_ms, costmap_ms, decision_ms;
+  const SemanticMap* semantic = nullptr;
+  for (const EpisodeObserver* o : observers) {
+    if (!semantic) semantic = o->semanticMap();
+  }
   double t = 0.0;
   double next_scan_s = 0.0, next_metrics_s = 0.0, next_decision_s = 0.0;
   bool map_changed_since_costmap = true;
@@ -270,6 +275,8 @@ EpisodeResult runEpisode(const WorldModel& world, EpisodeConfig config, Explorat
       }
     }
 
+    for (EpisodeObserver* o : observers) o->onStep(EpisodeSnapshot{t, robot.pose(), grid, world, scanned});
+
     // 2. A path through newly seen obstacles is replanned; failing that, the goal fails.
     if (scanned && goal && follower.hasPath() &&
         pathBlocked(grid, follower.path(), follower.progressIndex(), lethal_disc, robot.pose().position(),
@@ -284,7 +291,7 @@ EpisodeResult runEpisode(const WorldModel& world, EpisodeConfig config, Explorat
       refreshCostmap();
       bool have_goal = false;
       for (int attempt = 0; attempt < opt.max_decisions_per_step && !finished && !have_goal; ++attempt) {
-        const ExplorationInput input{grid, costmap, robot.pose(), t};
+        const ExplorationInput input{grid, costmap, robot.pose(), t, semantic};
         const auto start = Clock::now();
         const Decision d = strategy.decide(input);
         decision_ms.push_back(msSince(start));
@@ -365,6 +372,10 @@ EpisodeResult runEpisode(const WorldModel& world, EpisodeConfig config, Explorat
   }
 
   sampleMetrics();
+  for (EpisodeObserver* o : observers) {
+    o->onFinish(EpisodeSnapshot{t, robot.pose(), grid, world, true});
+    result.map_updates[std::string(o->name())] = TimingStats::of(o->updateTimes_ms());
+  }
   result.exploration_rate = rate;
   result.sim_time_s = t;
   result.length_m = robot.odometer_m();

@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -14,6 +15,7 @@
 #include "roomscout/planning/astar_planner.hpp"
 #include "roomscout/planning/costmap.hpp"
 #include "roomscout/planning/path_follower.hpp"
+#include "roomscout/sim/episode_observer.hpp"
 #include "roomscout/sim/laser_simulator.hpp"
 #include "roomscout/sim/robot.hpp"
 #include "roomscout/sim/world_model.hpp"
@@ -98,6 +100,7 @@ struct EpisodeResult {
   TimingStats occupancy_update;    ///< per scan: ray tracing into the grid
   TimingStats costmap_update;      ///< per decision
   TimingStats decision;            ///< strategy decide() per call
+  std::map<std::string, TimingStats> map_updates;  ///< per observer, by its name()
   std::vector<CurveSample> curve;
   std::vector<TrajectorySample> trajectory;
   OccupancyGrid map;
@@ -107,8 +110,11 @@ struct EpisodeResult {
 using EpisodeProgress = std::function<void(double time_s, double max_time_s, double rate)>;
 
 /// Runs one episode. The world model is shared read-only; everything else is created here
-/// from `config` and `seed`, so the same inputs give the same result.
+/// from `config` and `seed`, so the same inputs give the same result. `observers` build
+/// further maps as the robot explores; the first one that has a semanticMap() feeds the
+/// strategy's ExplorationInput::semantic.
 EpisodeResult runEpisode(const WorldModel& world, EpisodeConfig config, ExplorationStrategy& strategy,
-                         std::uint64_t seed, const EpisodeProgress& progress = {});
+                         std::uint64_t seed, const EpisodeProgress& progress = {},
+                         const std::vector<EpisodeObserver*>& observers = {});
 
 }  // namespace roomscout::sim
