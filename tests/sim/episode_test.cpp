@@ -73,5 +73,27 @@ TEST(Episode, TwoRoomsAreBothExploredAndCounted) {
   EXPECT_EQ(r.rooms_entered, 2);
 }
 
+TEST(Episode, BumpingIntoAnObstacleTheLaserCannotSeeRecoversAndEnds) {
+  // A 10 m x 1.2 m corridor with a 0.1 m high box across its middle: below the laser plane
+  // (0.18 m), so the map never shows it, but it stops the robot. The robot must back off,
+  // give up the goal behind it and end instead of pushing forever.
+  World w;
+  w.name = "low_box";
+  w.source = "test:low_box";
+  const double t = 0.2;
+  w.walls = {{{0, 0}, {10, 0}, t, 0, 2.5}, {{10, 0}, {10, 1.4}, t, 0, 2.5},
+             {{10, 1.4}, {0, 1.4}, t, 0, 2.5}, {{0, 1.4}, {0, 0}, t, 0, 2.5}};
+  w.furniture.push_back({"low_box", {{2.5, 0.1}, {2.9, 0.1}, {2.9, 1.3}, {2.5, 1.3}}, 0.0, 0.1});
+  w.start = {0.8, 0.7, 0.0};
+  w.start_given = true;
+  const EpisodeResult r = explore(w, "nearest_frontier", 1);
+  EXPECT_GE(r.recoveries, 1) << "t_done " << r.t_done_s.value_or(-1) << " goals " << r.goals << " failures "
+                             << r.goal_failures << " length " << r.length_m;
+  EXPECT_FALSE(r.timed_out);
+  EXPECT_TRUE(r.t_done_s.has_value());
+  // It never drove through the box.
+  for (const TrajectorySample& s : r.trajectory) EXPECT_LT(s.pose.x_m, 2.5);
+}
+
 }  // namespace
 }  // namespace roomscout::sim
