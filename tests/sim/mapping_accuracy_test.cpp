@@ -21,7 +21,7 @@ TEST(OccupancyMapping, OneScanAgreesWithGroundTruthInRange) {
   OccupancyMapper mapper(grid);
   LaserSimulator laser(model, LaserOptions{}, 3);
   const Pose2 pose{3.0, 3.0, 0.2};
-  // Two scans from the same pose: free cells need two misses by default.
+  // Two scans from the same pose (one would do: a miss in one scan makes a cell free).
   for (int i = 0; i < 2; ++i) mapper.integrate(laser.scan(pose), pose);
 
   std::size_t known = 0, agree = 0, free_in_range = 0, free_known = 0;

@@ -22,7 +22,7 @@ struct OccupancyGridOptions {
   double log_odds_min = -2.0;          ///< clamp, so that a cell can change its mind
   double log_odds_max = 3.5;           ///< clamp
   double occupied_threshold = 0.62;    ///< log-odds above this: occupied (p > 0.65)
-  double free_threshold = -0.62;       ///< log-odds below this: free (p < 0.35; two misses)
+  double free_threshold = -0.35;       ///< log-odds below this: free (p < 0.41; one scan's miss)
 
   /// Throws OptionError when a value is out of range.
   void validate() const;

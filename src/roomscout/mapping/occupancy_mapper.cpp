@@ -50,6 +50,22 @@ CellRect OccupancyMapper::integrate(const LaserScan& scan, const Pose2& T_map_se
   CellRect changed;
   if (scan.ranges_m.empty()) return changed;
   changed.expandToInclude(g.cellOf(origin));
+  if (scan_ >= (std::numeric_limits<std::uint32_t>::max() - 2) / 2) {
+    std::fill(stamp_.begin(), stamp_.end(), 0u);
+    scan_ = 0;
+  }
+  ++scan_;
+  const std::uint32_t hit_mark = 2 * scan_ + 1;
+  const std::uint32_t miss_mark = 2 * scan_ + 2;
+
+  // Pass 1: end points. Pass 2: the cells crossed, skipping this scan's hit cells.
+  struct Beam {
+    Vec2 end;
+    bool hit;
+  };
+  std::vector<Beam> beams;
+  beams.reserve(scan.ranges_m.size());
+  hits_.clear();
   for (std::size_t i = 0; i < scan.ranges_m.size(); ++i) {
     const double r = scan.ranges_m[i];
     const bool hit = std::isfinite(r) && r >= scan.range_min_m && r <= scan.range_max_m;
@@ -59,20 +75,31 @@ CellRect OccupancyMapper::integrate(const LaserScan& scan, const Pose2& T_map_se
     const Vec2 dir(std::cos(angle), std::sin(angle));
     // A tiny step past the measured surface puts the end point inside the obstacle's cell.
     const Vec2 end = origin + dir * (hit ? length + 1e-4 : length);
-    traverse(g, origin, end, [&](std::size_t index) { grid_.addMiss(index); });
+    beams.push_back({end, hit});
     const Cell end_cell = g.cellOf(end);
-    if (!g.contains(end_cell)) {
-      changed.expandToInclude({std::clamp(end_cell.x, 0, g.width() - 1),
-                               std::clamp(end_cell.y, 0, g.height() - 1)});
-      continue;
-    }
-    changed.expandToInclude(end_cell);
-    if (hit) {
-      grid_.addHit(g.index(end_cell));
-    } else {
-      grid_.addMiss(g.index(end_cell));
+    changed.expandToInclude({std::clamp(end_cell.x, 0, std::max(0, g.width() - 1)),
+                             std::clamp(end_cell.y, 0, std::max(0, g.height() - 1))});
+    if (hit && g.contains(end_cell)) {
+      const std::size_t index = g.index(end_cell);
+      if (stamp_[index] != hit_mark) {
+        stamp_[index] = hit_mark;
+        hits_.push_back(index);
+      }
     }
   }
+  auto miss = [&](std::size_t index) {
+    if (stamp_[index] == hit_mark || stamp_[index] == miss_mark) return;
+    stamp_[index] = miss_mark;
+    grid_.addMiss(index);
+  };
+  for (const Beam& beam : beams) {
+    traverse(g, origin, beam.end, miss);
+    if (!beam.hit) {
+      const Cell end_cell = g.cellOf(beam.end);
+      if (g.contains(end_cell)) miss(g.index(end_cell));
+    }
+  }
+  for (std::size_t index : hits_) grid_.addHit(index);
   return changed;
 }
 

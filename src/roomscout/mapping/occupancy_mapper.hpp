@@ -6,13 +6,20 @@
 #include "roomscout/core/laser_scan.hpp"
 #include "roomscout/core/occupancy_grid.hpp"
 
+#include <cstdint>
+#include <vector>
+
 namespace roomscout {
 
-/// Beam-wise inverse sensor model: cells a beam crosses get a miss, its end cell a hit.
+/// Inverse sensor model with OctoMap's per-scan set semantics (Hornung et al., 2013): within
+/// one scan every cell is updated at most once, a cell that any beam ends in gets a hit, and
+/// the cells beams cross, except those hit cells, get a miss. So grazing beams crossing the
+/// free part of a wall-face cell cannot outvote the beams that hit the wall in it.
 /// Beams without a return clear space up to the scan's range_max_m.
 class OccupancyMapper {
  public:
-  explicit OccupancyMapper(OccupancyGrid& grid) : grid_(grid) {}
+  explicit OccupancyMapper(OccupancyGrid& grid)
+      : grid_(grid), stamp_(grid.geometry().cellCount(), 0) {}
 
   /// Updates the grid with one scan taken at `T_map_sensor`. Returns the rectangle of cells
   /// that may have changed (for incremental consumers such as a costmap).
@@ -20,6 +27,9 @@ class OccupancyMapper {
 
  private:
   OccupancyGrid& grid_;
+  std::vector<std::uint32_t> stamp_;  ///< 2*scan+1: hit in scan `scan`; 2*scan+2: missed in it
+  std::uint32_t scan_ = 0;
+  std::vector<std::size_t> hits_;
 };
 
 }  // namespace roomscout
