@@ -1,7 +1,10 @@
 #include "roomscout/exploration/strategy_registry.hpp"
 
 #include "roomscout/core/errors.hpp"
+#include "roomscout/exploration/improved_rrt.hpp"
+#include "roomscout/exploration/mmpf.hpp"
 #include "roomscout/exploration/nearest_frontier.hpp"
+#include "roomscout/exploration/rrt_exploration.hpp"
 
 namespace roomscout {
 
@@ -11,6 +14,18 @@ const std::vector<StrategyEntry>& strategyRegistry() {
        "explore_lite's greedy frontier exploration (cost = potential_scale*distance - "
        "gain_scale*size)",
        [](std::uint64_t /*seed*/) { return std::make_unique<NearestFrontier>(); }},
+      {"rrt",
+       "Umari & Mukhopadhyay's RRT exploration (global + local trees, mean-shift filter, "
+       "revenue = 3*IG - distance)",
+       [](std::uint64_t seed) { return std::make_unique<RrtExploration>(seed); }},
+      {"improved_rrt",
+       "SMMR-Explore's rrt node: one tree over the map box, score = 3*(unknown - occupied) - "
+       "distance",
+       [](std::uint64_t seed) { return std::make_unique<ImprovedRrt>(seed); }},
+      {"mmpf",
+       "SMMR-Explore's multi-target potential field: frontier clusters, BFS distances, "
+       "gradient descent with a river term",
+       [](std::uint64_t /*seed*/) { return std::make_unique<Mmpf>(); }},
   };
   return entries;
 }

@@ -40,7 +40,7 @@ nlohmann::json metricsJson(const RunInfo& info, const sim::EpisodeResult& r) {
   for (const auto& [name, stats] : r.map_updates) update_ms[name] = timing(stats);
   nlohmann::json curve = nlohmann::json::array();
   for (const sim::CurveSample& c : r.curve) curve.push_back({c.time_s, c.length_m, c.rate});
-  return {
+  nlohmann::json metrics = {
       {"world", info.world},
       {"world_source", info.world_source},
       {"method", info.method},
@@ -67,6 +67,8 @@ nlohmann::json metricsJson(const RunInfo& info, const sim::EpisodeResult& r) {
       {"curve", curve},
       {"options", info.options},
   };
+  if (!info.maps.is_null()) metrics["maps"] = info.maps;
+  return metrics;
 }
 
 cv::Mat renderRun(const sim::EpisodeResult& result) {

@@ -19,6 +19,8 @@ struct RunInfo {
   std::string method;
   std::uint64_t seed = 0;
   nlohmann::json options;  ///< resolved options, {group: {name: value}}, strategy included
+  nlohmann::json maps;     ///< what further maps hold, {map: {...}} (e.g. point count, file
+                           ///< bytes); written as metrics.json's `maps` when not null
 };
 
 /// metrics.json's content: the keys documented in the README.

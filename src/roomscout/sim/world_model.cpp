@@ -8,6 +8,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "roomscout/core/errors.hpp"
+#include "roomscout/sim/polygon_raster.hpp"
 
 namespace roomscout::sim {
 
@@ -28,48 +29,6 @@ std::vector<ParameterRef> WorldModelOptions::parameters() {
 }
 
 namespace {
-
-/// Fills the raster cells whose centres lie inside `polygon_m` (even-odd rule), by scanlines
-/// through the cell centres. Exact for any simple or self-touching polygon.
-template <typename T>
-void fillPolygon(cv::Mat& raster, const GridGeometry& g, const Polygon& polygon_m, T value) {
-  const std::size_t n = polygon_m.size();
-  if (n < 3) return;
-  std::vector<Vec2> q(n);
-  double y_lo = std::numeric_limits<double>::infinity(), y_hi = -y_lo;
-  for (std::size_t i = 0; i < n; ++i) {
-    q[i] = (polygon_m[i] - g.origin_m()) / g.resolution_m();  // raster units, cell x spans [x, x+1)
-    y_lo = std::min(y_lo, q[i].y());
-    y_hi = std::max(y_hi, q[i].y());
-  }
-  const int row_lo = std::max(0, static_cast<int>(std::ceil(y_lo - 0.5)));
-  const int row_hi = std::min(raster.rows - 1, static_cast<int>(std::floor(y_hi - 0.5)));
-  std::vector<double> crossings;
-  for (int row = row_lo; row <= row_hi; ++row) {
-    const double yc = row + 0.5;
-    crossings.clear();
-    for (std::size_t i = 0, j = n - 1; i < n; j = i++) {
-      const Vec2& a = q[i];
-      const Vec2& b = q[j];
-      if ((a.y() > yc) != (b.y() > yc)) crossings.push_back(a.x() + (yc - a.y()) * (b.x() - a.x()) / (b.y() - a.y()));
-    }
-    std::sort(crossings.begin(), crossings.end());
-    T* out = raster.ptr<T>(row);
-    for (std::size_t k = 0; k + 1 < crossings.size(); k += 2) {
-      // cells whose centre x + 0.5 lies in [crossings[k], crossings[k+1])
-      const int x0 = std::max(0, static_cast<int>(std::ceil(crossings[k] - 0.5)));
-      const int x1 = std::min(raster.cols - 1, static_cast<int>(std::ceil(crossings[k + 1] - 0.5)) - 1);
-      for (int x = x0; x <= x1; ++x) out[x] = value;
-    }
-  }
-}
-
-Polygon wallRectangle(const Wall& w) {
-  const Vec2 d = w.b_m - w.a_m;
-  const double len = d.norm();
-  const Vec2 n = len > 0 ? Vec2(Vec2(-d.y(), d.x()) / len * (w.thickness_m * 0.5)) : Vec2(Vec2::Zero());
-  return {w.a_m - n, w.b_m - n, w.b_m + n, w.a_m + n};
-}
 
 bool spans(double z_min, double z_max, double z) { return z_min <= z && z <= z_max; }
 

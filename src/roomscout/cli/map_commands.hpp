@@ -1,0 +1,24 @@
+#pragma once
+// Subcommands that build or score maps outside an episode: `maps` and `segment-eval`.
+
+#include <functional>
+
+#include <CLI/CLI.hpp>
+
+namespace roomscout::cli {
+
+/// A registered subcommand and what to run once it was parsed (errors propagate as the
+/// typed exceptions main() reports).
+struct Subcommand {
+  CLI::App* app = nullptr;
+  std::function<int()> run;
+};
+
+/// `roomscout maps --map FILE.yaml --out DIR`: topological and semantic maps of any
+/// map_server occupancy map.
+Subcommand addMapsCommand(CLI::App& app);
+
+/// `roomscout segment-eval --dataset DIR --out DIR`: the room segmentation benchmark.
+Subcommand addSegmentEvalCommand(CLI::App& app);
+
+}  // namespace roomscout::cli

@@ -1,0 +1,50 @@
+#pragma once
+// Grid-cell helpers shared by the SMMR-Explore baselines (improved_rrt, mmpf) and the end test
+// we add to rrt: SMMR-Explore's "reachable frontier cell" scan, and snapping a point to the
+// nearest cell a goal may lie in.
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "roomscout/core/occupancy_grid.hpp"
+#include "roomscout/planning/costmap.hpp"
+
+namespace roomscout {
+
+/// SMMR-Explore's frontier cells (rrt_node_tf.cpp and mmpf_node.cpp, Yu et al., ICRA 2021):
+/// an unknown cell with a free 4-neighbour that has a further free neighbour (ahead or to
+/// either side), not lethal in the costmap and with no occupied cell at an L1 distance below
+/// `obstacle_l1_cells` (the originals: 4 in the rrt end test, 6 in mmpf). Cells within two
+/// cells of the grid border are skipped, as in the originals. Row-major order.
+/// Cells flagged non-zero in `exhausted` (one byte per cell, may be null) are skipped too.
+/// With `robot_m`, a cell also needs a 4-neighbour in the known-free, non-lethal region
+/// connected to the robot (a deviation of our end tests: the originals count frontier cells
+/// the robot's footprint can never approach, e.g. in a toilet cubicle narrower than the robot,
+/// and then never end).
+std::vector<Cell> reachableFrontierCells(const OccupancyGrid& grid, const Costmap& costmap,
+                                         int obstacle_l1_cells,
+                                         const std::vector<std::uint8_t>* exhausted = nullptr,
+                                         const Vec2* robot_m = nullptr);
+
+/// The known-free, non-lethal cells 4-connected to the cell of `from_m` (or, when that cell is
+/// not such a cell, to the nearest one within 1 m), as a one-byte-per-cell mask.
+std::vector<std::uint8_t> robotFreeRegion(const OccupancyGrid& grid, const Costmap& costmap, const Vec2& from_m);
+
+/// Flags (sets to 1) the cells of `mask` (one byte per cell of `geometry`, resized if needed)
+/// whose centres lie within `radius_m` of `p_m`.
+///
+/// Used for a deviation shared by the baselines' end tests: our simulated laser never marks a
+/// few cells (faces of furniture seen only at grazing angles, slivers under the minimum range),
+/// so "fewer than 2 reachable frontier cells" may never hold. A frontier cell that stayed
+/// unknown while the robot was within this radius of it cannot be observed and is ignored.
+void markDisc(std::vector<std::uint8_t>& mask, const GridGeometry& geometry, const Vec2& p_m,
+              double radius_m);
+
+/// The centre of the cell nearest to `p_m` (by squared cell distance, ties by row-major order)
+/// that is inside the grid, not lethal and not occupied, within `max_radius_m`; none if there
+/// is none. With `free_only`, only known-free cells count.
+std::optional<Vec2> nearestGoalCell(const OccupancyGrid& grid, const Costmap& costmap, const Vec2& p_m,
+                                    double max_radius_m, bool free_only = false);
+
+}  // namespace roomscout

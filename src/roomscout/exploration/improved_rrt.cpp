@@ -1,0 +1,278 @@
+#include "roomscout/exploration/improved_rrt.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "roomscout/core/errors.hpp"
+#include "roomscout/exploration/frontier_cells.hpp"
+
+namespace roomscout {
+
+void ImprovedRrtOptions::validate() const {
+  auto positive = [](double v) { return std::isfinite(v) && v > 0.0; };
+  if (!positive(eta_m)) throw OptionError("improved_rrt.eta_m must be > 0");
+  if (!positive(iterations_per_s)) throw OptionError("improved_rrt.iterations_per_s must be > 0");
+  if (!positive(info_radius_m)) throw OptionError("improved_rrt.info_radius_m must be > 0");
+  if (!(hysteresis_radius_m >= 0.0) || !(hysteresis_gain >= 0.0) || !(gain_weight >= 0.0)) {
+    throw OptionError("improved_rrt: hysteresis_radius_m, hysteresis_gain and gain_weight must be >= 0");
+  }
+  if (new_points_trigger < 0 || iterations_trigger < 1 || min_goal_change_cells < 0) {
+    throw OptionError("improved_rrt: new_points_trigger >= 0, iterations_trigger >= 1, min_goal_change_cells >= 0");
+  }
+  if (end_check_iterations < 1 || end_checks < 1 || end_min_frontier_cells < 1 || end_obstacle_l1_cells < 1) {
+    throw OptionError("improved_rrt: end test counts must be >= 1");
+  }
+  if (!(replan_period_s >= 0.0)) throw OptionError("improved_rrt.replan_period_s must be >= 0");
+  if (!(blacklist_radius_m >= 0.0)) throw OptionError("improved_rrt.blacklist_radius_m must be >= 0");
+  if (!(observed_radius_m >= 0.0)) throw OptionError("improved_rrt.observed_radius_m must be >= 0");
+  if (max_iterations_per_call < 1) throw OptionError("improved_rrt.max_iterations_per_call must be >= 1");
+}
+
+std::vector<ParameterRef> ImprovedRrtOptions::parameters() {
+  return {
+      {"eta_m", &eta_m, "tree steering step [m]"},
+      {"iterations_per_s", &iterations_per_s, "RRT iterations per simulated second"},
+      {"info_radius_m", &info_radius_m, "half-side of the information gain square [m]"},
+      {"hysteresis_radius_m", &hysteresis_radius_m, "gain bonus radius around the robot [m]"},
+      {"hysteresis_gain", &hysteresis_gain, "gain factor within the hysteresis radius"},
+      {"gain_weight", &gain_weight, "score = gain_weight * G - distance"},
+      {"new_points_trigger", &new_points_trigger, "a goal selection runs after more new points than this"},
+      {"iterations_trigger", &iterations_trigger, "a goal selection runs after more iterations than this"},
+      {"min_goal_change_cells", &min_goal_change_cells, "least L1 move of a new goal [cells]"},
+      {"end_check_iterations", &end_check_iterations, "iterations between end tests"},
+      {"end_checks", &end_checks, "consecutive failing end tests that end exploration"},
+      {"end_min_frontier_cells", &end_min_frontier_cells, "fewer reachable frontier cells fail the end test"},
+      {"end_obstacle_l1_cells", &end_obstacle_l1_cells, "L1 margin of a reachable frontier cell to obstacles [cells]"},
+      {"replan_period_s", &replan_period_s, "decision period while driving [s]"},
+      {"blacklist_radius_m", &blacklist_radius_m, "points this close to a failed goal are dropped [m]"},
+      {"observed_radius_m", &observed_radius_m, "end test: frontier cells still unknown this close to the robot are ignored [m]"},
+      {"unsigned_count_quirk", &unsigned_count_quirk, "also select whenever points were removed since the last selection (the original's unsigned difference)"},
+      {"max_iterations_per_call", &max_iterations_per_call, "cap on iterations run in one call"},
+  };
+}
+
+/// Summed-area table of (unknown - occupied) over a grid, so that SMMR-Explore's
+/// informationRectangleGain costs O(1) per point.
+class GainTable {
+ public:
+  void build(const OccupancyGrid& grid) {
+    const GridGeometry& g = grid.geometry();
+    w_ = g.width();
+    h_ = g.height();
+    sum_.assign(static_cast<std::size_t>(w_ + 1) * (h_ + 1), 0);
+    for (int y = 0; y < h_; ++y) {
+      int row = 0;
+      for (int x = 0; x < w_; ++x) {
+        const CellState s = grid.state(static_cast<std::size_t>(y) * w_ + x);
+        row += s == CellState::kUnknown ? 1 : (s == CellState::kOccupied ? -1 : 0);
+        at(x + 1, y + 1) = at(x + 1, y) + row;
+      }
+    }
+  }
+  /// Sum over cells [x0, x1) x [y0, y1), clipped to the grid.
+  int sum(int x0, int y0, int x1, int y1) const {
+    x0 = std::clamp(x0, 0, w_);
+    x1 = std::clamp(x1, 0, w_);
+    y0 = std::clamp(y0, 0, h_);
+    y1 = std::clamp(y1, 0, h_);
+    if (x0 >= x1 || y0 >= y1) return 0;
+    return cat(x1, y1) - cat(x0, y1) - cat(x1, y0) + cat(x0, y0);
+  }
+
+ private:
+  int& at(int x, int y) { return sum_[static_cast<std::size_t>(y) * (w_ + 1) + x]; }
+  int cat(int x, int y) const { return sum_[static_cast<std::size_t>(y) * (w_ + 1) + x]; }
+  int w_ = 0, h_ = 0;
+  std::vector<int> sum_;
+};
+
+/// SMMR-Explore's informationRectangleGain: (unknown - occupied) area [m^2] in the square of
+/// half-side `half_m` around `p`: 2r+1 rows by 2r columns of cells (r = half_m / resolution,
+/// truncated), as the original's loops; cells outside the grid count as nothing.
+namespace {
+
+double rectangleGain(const GainTable& table, const GridGeometry& g, const Vec2& p, double half_m) {
+  const Cell c = g.cellOf(p);
+  const int r = static_cast<int>(half_m / g.resolution_m());
+  return table.sum(c.x - r, c.y - r, c.x + r, c.y + r + 1) * g.resolution_m() * g.resolution_m();
+}
+
+/// Bounding box of the known cells [m]; the robot's cell when nothing is known.
+void knownBox(const OccupancyGrid& grid, const Vec2& robot, Vec2& min_m, Vec2& max_m) {
+  const GridGeometry& g = grid.geometry();
+  int x0 = g.width(), y0 = g.height(), x1 = -1, y1 = -1;
+  for (int y = 0; y < g.height(); ++y) {
+    const std::size_t row = static_cast<std::size_t>(y) * g.width();
+    int first = -1, last = -1;
+    for (int x = 0; x < g.width(); ++x) {
+      if (!grid.isUnknown(row + x)) {
+        first = x;
+        break;
+      }
+    }
+    if (first < 0) continue;
+    for (int x = g.width() - 1; x >= first; --x) {
+      if (!grid.isUnknown(row + x)) {
+        last = x;
+        break;
+      }
+    }
+    x0 = std::min(x0, first);
+    x1 = std::max(x1, last);
+    y0 = std::min(y0, y);
+    y1 = y;
+  }
+  if (x1 < 0) {
+    min_m = max_m = robot;
+    return;
+  }
+  min_m = g.origin_m() + Vec2(x0 * g.resolution_m(), y0 * g.resolution_m());
+  max_m = g.origin_m() + Vec2((x1 + 1) * g.resolution_m(), (y1 + 1) * g.resolution_m());
+}
+
+}  // namespace
+
+ImprovedRrt::ImprovedRrt(std::uint64_t seed, const ImprovedRrtOptions& options)
+    : options_(options), rng_(seed), gain_table_(std::make_unique<GainTable>()) {}
+
+ImprovedRrt::~ImprovedRrt() = default;
+
+bool ImprovedRrt::blacklisted(const Vec2& p) const {
+  const double r2 = options_.blacklist_radius_m * options_.blacklist_radius_m;
+  return std::any_of(blacklist_.begin(), blacklist_.end(), [&](const Vec2& b) { return (b - p).squaredNorm() < r2; });
+}
+
+void ImprovedRrt::onGoalReached(const Vec2& goal_m) { onGoalFailed(goal_m); }
+
+void ImprovedRrt::onGoalFailed(const Vec2& goal_m) {
+  // Reached or failed, the goal is not sent again: what is still unknown around a reached goal
+  // cannot be seen from it (behind a wall), and a failed one cannot be reached.
+  if (goal_active_ && (goal_m - previous_goal_m_).norm() < 1e-9) {
+    blacklist_.push_back(goal_m);
+    std::erase_if(frontiers_, [&](const Point& f) { return blacklisted(f.p); });
+  }
+  goal_active_ = false;
+}
+
+bool ImprovedRrt::stale(const ExplorationInput& input, const Vec2& p) const {
+  const GridGeometry& g = input.grid.geometry();
+  const Cell c = g.cellOf(p);
+  if (!g.contains(c)) return true;
+  const std::size_t i = g.index(c);
+  return !input.grid.isUnknown(i) || input.costmap.isLethal(i);
+}
+
+ImprovedRrt::Step ImprovedRrt::iterate(const ExplorationInput& input, const RrtTree::Sampler& sampler) {
+  // End test every end_check_iterations iterations; a failing test skips the iteration.
+  if (++iterations_since_end_check_ >= options_.end_check_iterations) {
+    const Vec2 robot_m = input.robot.position();
+    iterations_since_end_check_ = 0;
+    const std::size_t cells =
+        reachableFrontierCells(input.grid, input.costmap, options_.end_obstacle_l1_cells, &visited_, &robot_m).size();
+    if (cells < static_cast<std::size_t>(options_.end_min_frontier_cells)) {
+      if (++failed_end_checks_ >= options_.end_checks) return Step::kDone;
+      return Step::kContinue;
+    }
+    failed_end_checks_ = 0;
+  }
+
+  const RrtExtension e = tree_->grow(input.grid, sampler, rng_);
+  if (e.status == EdgeStatus::kFrontier && !blacklisted(e.new_m)) frontiers_.push_back({e.new_m});
+  ++iterations_since_selection_;
+  if (has_previous_ && !stale(input, previous_goal_m_) && !blacklisted(previous_goal_m_)) {
+    frontiers_.push_back({previous_goal_m_});
+  }
+  std::erase_if(frontiers_, [&](const Point& f) { return stale(input, f.p); });
+
+  const long held = static_cast<long>(frontiers_.size());
+  // The original's unsigned difference: fewer points than after the last selection also fires.
+  const bool more = held - selected_count_ > options_.new_points_trigger ||
+                    (options_.unsigned_count_quirk && held < selected_count_);
+  if (more || iterations_since_selection_ > options_.iterations_trigger) select(input);
+  return Step::kContinue;
+}
+
+void ImprovedRrt::select(const ExplorationInput& input) {
+  iterations_since_selection_ = 0;
+  const GridGeometry& g = input.grid.geometry();
+  const double res = g.resolution_m();
+  // Points whose four neighbours are all unknown lie outside the valid map.
+  std::erase_if(frontiers_, [&](const Point& f) {
+    const Vec2 offsets[4] = {{res, 0}, {0, res}, {-res, 0}, {0, -res}};
+    for (const Vec2& o : offsets) {
+      const Cell c = g.cellOf(f.p + o);
+      if (!g.contains(c) || !input.grid.isUnknown(g.index(c))) return false;
+    }
+    return true;
+  });
+  selected_count_ = static_cast<long>(frontiers_.size());
+  if (frontiers_.empty()) return;
+
+  const Vec2 robot = input.robot.position();
+  double best_score = -500.0;
+  const Point* best = nullptr;
+  for (Point& f : frontiers_) {
+    if (f.gain_call != call_) {
+      if (table_call_ != call_) {
+        gain_table_->build(input.grid);
+        table_call_ = call_;
+      }
+      f.gain_m2 = rectangleGain(*gain_table_, g, f.p, options_.info_radius_m);
+      f.gain_call = call_;
+    }
+    double gain = f.gain_m2;
+    const double d = (f.p - robot).norm();
+    if (d <= options_.hysteresis_radius_m) gain *= options_.hysteresis_gain;
+    const double score = options_.gain_weight * gain - d;
+    if (score > best_score) {
+      best_score = score;
+      best = &f;
+    }
+  }
+  if (best == nullptr) return;
+  const double l1 = std::abs(best->p.x() - previous_goal_m_.x()) + std::abs(best->p.y() - previous_goal_m_.y());
+  if (has_previous_ && l1 < options_.min_goal_change_cells * res) return;
+  previous_goal_m_ = best->p;
+  has_previous_ = true;
+  goal_active_ = true;
+}
+
+Decision ImprovedRrt::decide(const ExplorationInput& input) {
+  ++call_;
+  const Vec2 robot = input.robot.position();
+  if (!tree_) {
+    const GridGeometry& g = input.grid.geometry();
+    const Vec2 max_m = g.origin_m() + Vec2(g.width() * g.resolution_m(), g.height() * g.resolution_m());
+    tree_ = std::make_unique<RrtTree>(options_.eta_m, g.origin_m(), max_m, 0.5);
+    tree_->reset(robot);
+    done_until_s_ = input.time_s;
+  }
+  const double owed = (input.time_s - done_until_s_) * options_.iterations_per_s;
+  long n = static_cast<long>(std::floor(owed + 1e-9));
+  if (n > options_.max_iterations_per_call) {
+    n = options_.max_iterations_per_call;
+    done_until_s_ = input.time_s;
+  } else if (n > 0) {
+    done_until_s_ += static_cast<double>(n) / options_.iterations_per_s;
+  }
+  markDisc(visited_, input.grid.geometry(), robot, options_.observed_radius_m);
+  if (n > 0) {
+    Vec2 box_min, box_max;
+    knownBox(input.grid, robot, box_min, box_max);
+    const RrtTree::Sampler sampler = uniformBoxSampler(box_min, box_max);
+    for (long k = 0; k < n; ++k) {
+      if (iterate(input, sampler) == Step::kDone) return Decision::done();
+    }
+  }
+
+  const GridGeometry& g = input.grid.geometry();
+  if (goal_active_ && !input.costmap.isLethal(g.cellOf(previous_goal_m_))) return Decision::goal(previous_goal_m_);
+  // A goal that became lethal is given up like a failed one.
+  if (goal_active_) onGoalFailed(previous_goal_m_);
+  // No goal to drive to: wait where we are until the next selection.
+  if (const auto wait = nearestGoalCell(input.grid, input.costmap, robot, 3.0)) return Decision::goal(*wait);
+  return Decision::done();
+}
+
+}  // namespace roomscout

@@ -1,0 +1,123 @@
+#pragma once
+// "Improved RRT": the rrt node of SMMR-Explore (Yu et al., "SMMR-Explore: SubMap-based
+// Multi-Robot Exploration System with Multi-robot Multi-target Potential Field Exploration
+// Method", ICRA 2021; code efc-robot/SMMR-Explore, src/rrt/src/rrt_node_tf.cpp), run for one
+// robot.
+//
+// One tree rooted at the start (eta 1 m, single_rrt_node.launch) samples uniformly over the
+// box of the current map (here: the bounding box of the known cells), 100 iterations per
+// second (rate 100). Each iteration:
+// - every 100 iterations, the end test: the reachable frontier cells (see
+//   reachableFrontierCells, L1 margin 4 cells) are counted; fewer than 2 in 5 consecutive
+//   tests ends the exploration;
+// - one sample, nearest node, steer, edge check; an edge into unknown space adds its end as a
+//   frontier point; the previous goal is added again while it is still unknown and clear;
+// - frontier points no longer unknown or inside the inflation are removed;
+// - a goal selection runs when more than 25 points arrived since the last one, or after 500
+//   iterations (the original computes the count as an unsigned difference, so it also selects
+//   whenever points were removed since the last selection; that quirk made the robot switch
+//   goals every few iterations here and is off by default: unsigned_count_quirk). A selection drops
+//   points whose four neighbours are all unknown, scores G = (unknown - occupied) area in the
+//   square of half-side info_radius (1 m), G *= 2 within 3 m, score = 3 * G - d (Euclidean),
+//   and sends the best unless it lies within 3 cells (L1) of the previous goal.
+//
+// Deliberate deviations:
+// - iterations per simulated second instead of per wall-clock second; decide() runs the
+//   iterations owed for the simulated time since the last call (replanPeriod_s 0.25 s: a
+//   selection can fire at most every 26 iterations);
+// - "inside the inflation" is our costmap's lethal zone (the launch file's threshold 0 on
+//   move_base's costmap also excludes its soft inflation);
+// - a goal that was reached or whose path failed is blacklisted (points within
+//   blacklist_radius_m are dropped); the original leaves the robot idle on it until another
+//   point scores better, which a point whose unknown square lies behind a wall may never allow;
+// - the end test ignores frontier cells that stayed unknown while the robot was within
+//   observed_radius_m of them (see markDisc): our laser never marks a few furniture-face cells;
+// - after reaching its goal the robot waits in place (a goal at the nearest non-lethal cell)
+//   until the next selection, as the original idles.
+
+#include <cstdint>
+#include <memory>
+#include <random>
+#include <vector>
+
+#include "roomscout/exploration/exploration_strategy.hpp"
+#include "roomscout/exploration/rrt_tree.hpp"
+
+namespace roomscout {
+
+struct ImprovedRrtOptions {
+  double eta_m = 1.0;                ///< tree step (single_rrt_node.launch)
+  double iterations_per_s = 100.0;   ///< RRT iterations per simulated second (rate 100)
+  double info_radius_m = 1.0;        ///< half-side of the information-gain square [m]
+  double hysteresis_radius_m = 3.0;  ///< gain bonus radius around the robot [m]
+  double hysteresis_gain = 2.0;      ///< gain factor within hysteresis_radius_m
+  double gain_weight = 3.0;          ///< score = gain_weight * G - d
+  int new_points_trigger = 25;       ///< a selection runs after more new points than this
+  int iterations_trigger = 500;      ///< ... or after more iterations than this
+  int min_goal_change_cells = 3;     ///< a new goal must move at least this far (L1, cells)
+  int end_check_iterations = 100;    ///< iterations between end tests
+  int end_checks = 5;                ///< consecutive failing end tests that end exploration
+  int end_min_frontier_cells = 2;    ///< fewer reachable frontier cells fail the end test
+  int end_obstacle_l1_cells = 4;     ///< L1 margin of a reachable frontier cell to obstacles
+  double replan_period_s = 0.25;     ///< decide() period while driving [s]
+  double blacklist_radius_m = 0.3;   ///< failed goals drop points this close [m]
+  double observed_radius_m = 0.75;   ///< end test ignores frontier cells that stayed unknown
+                                     ///< with the robot this close (see markDisc) [m]
+  bool unsigned_count_quirk = false; ///< reproduce the original's unsigned point count: a
+                                     ///< selection also whenever points were removed
+  int max_iterations_per_call = 20000;  ///< cap on owed iterations run in one call
+
+  void validate() const;
+  std::vector<ParameterRef> parameters();
+};
+
+class GainTable;
+
+class ImprovedRrt final : public ExplorationStrategy {
+ public:
+  explicit ImprovedRrt(std::uint64_t seed, const ImprovedRrtOptions& options = {});
+  ~ImprovedRrt() override;
+
+  std::string_view name() const override { return "improved_rrt"; }
+  Decision decide(const ExplorationInput& input) override;
+  void onGoalReached(const Vec2& goal_m) override;
+  void onGoalFailed(const Vec2& goal_m) override;
+  double replanPeriod_s() const override { return options_.replan_period_s; }
+  std::vector<ParameterRef> parameters() override { return options_.parameters(); }
+  void validateOptions() const override { options_.validate(); }
+
+  /// Frontier points currently held (for tests and visualisation).
+  std::size_t frontierCount() const { return frontiers_.size(); }
+
+ private:
+  struct Point {
+    Vec2 p;
+    double gain_m2 = 0.0;   ///< G cached for the call `gain_call`
+    std::uint64_t gain_call = 0;
+  };
+  enum class Step { kContinue, kDone };
+  Step iterate(const ExplorationInput& input, const RrtTree::Sampler& sampler);
+  void select(const ExplorationInput& input);
+  bool blacklisted(const Vec2& p) const;
+  bool stale(const ExplorationInput& input, const Vec2& p) const;
+
+  ImprovedRrtOptions options_;
+  std::mt19937_64 rng_;
+  std::unique_ptr<RrtTree> tree_;
+  double done_until_s_ = 0.0;
+  std::uint64_t call_ = 0;
+  long iterations_since_selection_ = 0;
+  long iterations_since_end_check_ = 0;
+  int failed_end_checks_ = 0;
+  long selected_count_ = 0;            ///< points held right after the last selection
+  std::vector<Point> frontiers_;
+  std::vector<std::uint8_t> visited_;  ///< cells the robot came within observed_radius_m of
+  std::vector<Vec2> blacklist_;
+  std::unique_ptr<GainTable> gain_table_;  ///< built at most once per call, when needed
+  std::uint64_t table_call_ = 0;
+  bool has_previous_ = false;
+  Vec2 previous_goal_m_ = Vec2::Zero();
+  bool goal_active_ = false;           ///< previous_goal_m_ is being driven to
+};
+
+}  // namespace roomscout

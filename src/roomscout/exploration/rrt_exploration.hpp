@@ -1,0 +1,109 @@
+#pragma once
+// RRT exploration of Umari & Mukhopadhyay, "Autonomous robotic exploration based on multiple
+// rapidly-exploring randomized trees", IROS 2017 (code: hasauino/rrt_exploration).
+//
+// Three stages, as in the original's three nodes:
+// - detectors: a global tree (eta 15 m, rooted at the start, never reset) and a local tree
+//   (eta 1 m, re-rooted at the robot after each of its detections) sample uniformly over the
+//   map's bounds; an edge that reaches unknown space yields a frontier point (the point where
+//   the walk met it) and is not added; edges through occupied cells are rejected;
+// - filter: mean-shift (flat kernel, bandwidth 0.3 m, as sklearn's MeanShift) over the
+//   previous cycle's centroids plus the new detections; a centroid is dropped when its costmap
+//   cell is lethal or its information gain in a disc of 0.5 * info_radius is below 0.2 m^2;
+// - assigner: IG = unknown area in a disc of info_radius (1 m), doubled when the Euclidean
+//   distance d <= hysteresis_radius (3 m); revenue = info_multiplier (3) * IG - d; the
+//   centroid of highest revenue is the goal, re-assigned every 0.5 s (the original assigner's
+//   delay_after_assignment) whether or not the robot is busy, as the original does.
+//
+// Deliberate deviations:
+// - the original samples 100 points per wall-clock second per tree; here the rate is per
+//   simulated second (samples_per_s) and decide() grows the samples owed for the simulated
+//   time since the last call, so the rate does not depend on how often decide() is called;
+//   the local tree is re-rooted at the pose of that call;
+// - the original never stops; we add SMMR-Explore's end test (see ImprovedRrt): once per
+//   simulated second, count the reachable frontier cells; fewer than 2 in 5 consecutive
+//   checks ends the exploration; cells that stayed unknown while the robot was within
+//   observed_radius_m of them are ignored (see markDisc);
+// - the filter drops a centroid when its costmap cell is lethal (the original: cost above a
+//   threshold of 70 on ROS's 0-100 costmap scale; our costmap has no such scale);
+// - goals that were reached or whose path failed are blacklisted (no centroid within
+//   blacklist_radius_m of one is assigned again); the original re-sends them, and a centroid
+//   whose unknown disc lies behind a wall keeps the robot parked on it forever;
+// - the assigner's multi-robot discount of centroids near other robots' goals is left out
+//   (one robot);
+// - with no centroid and no goal left, the robot waits where it is (a goal at the nearest
+//   non-lethal cell) while the trees grow.
+
+#include <cstdint>
+#include <memory>
+#include <random>
+#include <vector>
+
+#include "roomscout/exploration/exploration_strategy.hpp"
+#include "roomscout/exploration/rrt_tree.hpp"
+
+namespace roomscout {
+
+struct RrtExplorationOptions {
+  double global_eta_m = 15.0;          ///< global tree step (rrt_exploration launch files)
+  double local_eta_m = 1.0;            ///< local tree step
+  double samples_per_s = 100.0;        ///< samples per simulated second, per tree
+  double bandwidth_m = 0.3;            ///< mean-shift bandwidth of the filter
+  double info_radius_m = 1.0;          ///< information-gain disc radius of the assigner
+  double min_info_gain_m2 = 0.2;       ///< filter: centroids with less unknown area (disc of
+                                       ///< 0.5 * info_radius_m) are dropped [m^2]
+  double info_multiplier = 3.0;        ///< weight of IG in the revenue
+  double hysteresis_radius_m = 3.0;    ///< IG bonus radius around the robot [m]
+  double hysteresis_gain = 2.0;        ///< IG factor within hysteresis_radius_m
+  double assign_period_s = 0.5;        ///< re-assignment period (delay_after_assignment) [s]
+  double blacklist_radius_m = 0.3;     ///< failed goals exclude centroids this close [m]
+  double end_check_period_s = 1.0;     ///< end test period [s]
+  int end_checks = 5;                  ///< consecutive failing end tests that end exploration
+  int end_min_frontier_cells = 2;      ///< fewer reachable frontier cells fail the end test
+  double observed_radius_m = 0.75;     ///< end test ignores frontier cells that stayed unknown
+                                       ///< with the robot this close (see markDisc) [m]
+  int max_samples_per_call = 20000;    ///< cap on owed samples grown in one call (per tree)
+
+  void validate() const;
+  std::vector<ParameterRef> parameters();
+};
+
+class RrtExploration final : public ExplorationStrategy {
+ public:
+  explicit RrtExploration(std::uint64_t seed, const RrtExplorationOptions& options = {});
+  ~RrtExploration() override;
+
+  std::string_view name() const override { return "rrt"; }
+  Decision decide(const ExplorationInput& input) override;
+  void onGoalReached(const Vec2& goal_m) override;
+  void onGoalFailed(const Vec2& goal_m) override;
+  double replanPeriod_s() const override { return options_.assign_period_s; }
+  std::vector<ParameterRef> parameters() override { return options_.parameters(); }
+  void validateOptions() const override { options_.validate(); }
+
+  /// Centroids kept by the last filter cycle (for tests and visualisation).
+  const std::vector<Vec2>& centroids() const { return centroids_; }
+  /// Nodes of the global tree (0 before the first decide()).
+  std::size_t globalTreeSize() const { return global_ ? global_->size() : 0; }
+
+ private:
+  void grow(const ExplorationInput& input);
+  void filter(const ExplorationInput& input);
+  bool blacklisted(const Vec2& p) const;
+
+  RrtExplorationOptions options_;
+  std::mt19937_64 rng_;
+  std::unique_ptr<RrtTree> global_, local_;
+  RrtTree::Sampler sampler_;
+  double grown_until_s_ = 0.0;
+  double last_end_check_s_ = 0.0;
+  int failed_end_checks_ = 0;
+  std::vector<Vec2> detected_;   ///< frontier points detected since the last filter cycle
+  std::vector<Vec2> centroids_;  ///< the filter's output, re-clustered each cycle
+  std::vector<Vec2> blacklist_;
+  std::vector<std::uint8_t> visited_;  ///< cells the robot came within observed_radius_m of
+  bool has_goal_ = false;        ///< a real (not waiting) goal is active
+  Vec2 goal_m_ = Vec2::Zero();
+};
+
+}  // namespace roomscout

@@ -1,0 +1,64 @@
+#pragma once
+// A 3D point cloud map in the map frame, voxel-filtered as it grows: each voxel of side
+// voxel_size_m keeps the centroid of the points that fell into it (what pcl::VoxelGrid would
+// give for the same points), held in an open-addressing hash so a scan is inserted in time
+// proportional to its size, not the map's. Knows no sensor or file format.
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "roomscout/core/parameters.hpp"
+
+namespace roomscout {
+
+struct PointCloudMapOptions {
+  double voxel_size_m = 0.05;  ///< voxel side [m]
+  int max_points = 5000000;    ///< memory bound: voxels beyond this many are not created (at
+                               ///< most about 70 bytes each); points in existing voxels still count
+  void validate() const;
+  std::vector<ParameterRef> parameters();
+};
+
+/// Not thread-safe. Voxel indices must fit in 21 bits per axis (+-1 048 576 voxels from the
+/// map origin, +-52 km at 0.05 m); points beyond are rejected as out of bounds.
+class PointCloudMap {
+ public:
+  explicit PointCloudMap(const PointCloudMapOptions& options = {});
+
+  const PointCloudMapOptions& options() const { return options_; }
+
+  /// Adds points given in the map frame [m]. Returns the number of new voxels. Non-finite
+  /// points and points out of bounds are skipped.
+  std::size_t insert(const std::vector<Eigen::Vector3f>& points_map);
+
+  /// One point per voxel (the centroid of its points), in the order the voxels were created.
+  std::vector<Eigen::Vector3f> points() const;
+  std::size_t size() const { return counts_.size(); }
+  bool empty() const { return counts_.empty(); }
+  /// Axis-aligned bounds of points() [m]; both zero when empty.
+  std::pair<Eigen::Vector3f, Eigen::Vector3f> bounds() const;
+  /// Points that found the map full (max_points voxels) and were dropped.
+  std::size_t droppedPoints() const { return dropped_; }
+  /// Bytes held by the map's arrays (capacity, not size).
+  std::size_t memoryBytes() const;
+
+ private:
+  static constexpr std::uint64_t kEmpty = ~std::uint64_t{0};
+  void grow();
+  std::size_t slotOf(std::uint64_t key) const;
+
+  PointCloudMapOptions options_;
+  float inv_voxel_ = 20.0f;
+  std::vector<std::uint64_t> keys_;      ///< hash slots: packed voxel index or kEmpty
+  std::vector<std::uint32_t> slot_voxel_;  ///< per slot: index into sums_/counts_
+  std::size_t mask_ = 0;
+  std::vector<Eigen::Vector3f> sums_;    ///< per voxel: sum of its points, relative to its centre
+  std::vector<std::uint32_t> counts_;    ///< per voxel: number of points
+  std::vector<std::uint64_t> voxel_keys_;  ///< per voxel: its packed index
+  std::size_t dropped_ = 0;
+};
+
+}  // namespace roomscout

@@ -1,0 +1,26 @@
+#pragma once
+// Occupancy grids as OpenCV images for the map analysis (topology, rooms). Images keep the
+// grid's orientation: image row y is grid row y (row 0 at the bottom of the map).
+
+#include <opencv2/core/mat.hpp>
+
+#include "roomscout/core/occupancy_grid.hpp"
+
+namespace roomscout::maps {
+
+/// One CellState value per cell (CV_8U), row y = grid row y.
+cv::Mat stateImage(const OccupancyGrid& grid);
+
+/// The smallest rectangle holding every known (free or occupied) cell, grown by `margin`
+/// cells and clipped to the image; empty when nothing is known. Analysis runs on this crop:
+/// during exploration most of the grid is still unknown.
+cv::Rect knownBounds(const cv::Mat& states, int margin);
+
+/// The space rooms and paths live in: free cells (255) plus every enclosed blob (8-connected
+/// cells that are not free, occupied or unknown, not touching the image border) of at most
+/// `max_blob_area_px` cells whose bounding box is at most `max_blob_extent_px` on its longer
+/// side. Furniture blobs otherwise cut rooms into pieces and make tiny loops in skeletons.
+/// Everything else is 0. `states` is CV_8U of CellState values.
+cv::Mat fillableFreeSpace(const cv::Mat& states, int max_blob_area_px, int max_blob_extent_px);
+
+}  // namespace roomscout::maps

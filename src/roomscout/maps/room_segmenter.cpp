@@ -1,0 +1,342 @@
+#include "roomscout/maps/room_segmenter.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numeric>
+
+#include <opencv2/imgproc.hpp>
+
+#include "roomscout/core/errors.hpp"
+#include "roomscout/maps/grid_image.hpp"
+
+namespace roomscout {
+namespace {
+
+constexpr float kBinsPerCell = 4.0f;  // clearance quantisation: a quarter cell
+
+/// A room core found by the sweep: the connected part of {clearance bin > level} that holds
+/// `pixel` (level -1: the whole component).
+struct Core {
+  int pixel = 0;
+  int level = -1;
+};
+
+int findRoot(std::vector<int>& parent, int i) {
+  while (parent[i] != i) {
+    parent[i] = parent[parent[i]];
+    i = parent[i];
+  }
+  return i;
+}
+
+
+/// Door cuts in the spirit of ROSE²'s wall lines, for axis-aligned walls: a straight run of
+/// space between two wall ends that continue the same thin wall on both sides (jambs: a
+/// straight obstacle at least `jamb` cells long with space on both of its faces within
+/// `thick` cells) is a door in that wall. Returns the cut cells (255). `space` has a frame.
+cv::Mat doorCuts(const cv::Mat& space, int min_gap, int max_gap, int max_extension, int jamb, int thick) {
+  cv::Mat cuts = cv::Mat::zeros(space.size(), CV_8U);
+  if (max_gap <= 0 && max_extension <= 0) return cuts;
+  const int w = space.cols, h = space.rows;
+  const std::uint8_t* sp = space.ptr<std::uint8_t>(0);
+  // Along direction (ax, ay); faces across it (fx, fy).
+  for (const bool horizontal : {true, false}) {
+    const int along = horizontal ? 1 : w, across = horizontal ? w : 1;
+    const int lines = horizontal ? h : w, length = horizontal ? w : h;
+    auto at = [&](int line, int pos) { return horizontal ? line * w + pos : pos * w + line; };
+    auto isJamb = [&](int line, int pos, int dir) {
+      // pos: first obstacle cell beyond the gap; the wall continues in direction dir.
+      for (int i = 0; i < jamb; ++i) {
+        const int q = pos + dir * i;
+        if (q <= 0 || q >= length - 1) return false;
+        const int p = at(line, q);
+        if (sp[p]) return false;
+        bool free_before = false, free_after = false;
+        for (int t = 1; t <= thick && !(free_before && free_after); ++t) {
+          if (line - t >= 0 && sp[p - t * across]) free_before = true;
+          if (line + t < lines && sp[p + t * across]) free_after = true;
+        }
+        if (!free_before || !free_after) return false;
+      }
+      return true;
+    };
+    (void)along;
+    for (int line = 1; line + 1 < lines; ++line) {
+      int pos = 1;
+      while (pos < length - 1) {
+        if (!sp[at(line, pos)]) {
+          ++pos;
+          continue;
+        }
+        const int start = pos;
+        while (pos < length - 1 && sp[at(line, pos)]) ++pos;
+        const int gap = pos - start;
+        if (gap < min_gap || gap > std::max(max_gap, max_extension)) continue;
+        const bool left = isJamb(line, start - 1, -1), right = isJamb(line, pos, +1);
+        // A gap between two ends of the same wall is a door; a wall end that continues
+        // across a gap to any obstacle is a wall line extended (a wide opening).
+        if ((left && right && gap <= max_gap) || ((left || right) && gap <= max_extension)) {
+          for (int q = start; q < pos; ++q) cuts.ptr<std::uint8_t>(0)[at(line, q)] = 255;
+        }
+      }
+    }
+  }
+  return cuts;
+}
+
+}  // namespace
+
+void RoomSegmenterOptions::validate() const {
+  if (!(furniture_max_area_m2 >= 0.0)) throw OptionError("segmentation.furniture_max_area_m2 must be >= 0");
+  if (!(furniture_max_extent_m >= 0.0)) throw OptionError("segmentation.furniture_max_extent_m must be >= 0");
+  if (!(door_cut_min_width_m >= 0.0 && door_cut_max_width_m >= 0.0)) {
+    throw OptionError("segmentation.door_cut_min_width_m and door_cut_max_width_m must be >= 0");
+  }
+  if (!(wall_extension_max_m >= 0.0)) throw OptionError("segmentation.wall_extension_max_m must be >= 0");
+  if (!(jamb_min_length_m > 0.0)) throw OptionError("segmentation.jamb_min_length_m must be > 0");
+  if (!(wall_max_thickness_m > 0.0)) throw OptionError("segmentation.wall_max_thickness_m must be > 0");
+  if (!(door_max_width_m > 0.0)) throw OptionError("segmentation.door_max_width_m must be > 0");
+  if (!(neck_ratio > 0.0 && neck_ratio < 1.0)) throw OptionError("segmentation.neck_ratio must be in (0, 1)");
+  if (!(min_core_clearance_m >= 0.0)) throw OptionError("segmentation.min_core_clearance_m must be >= 0");
+  if (!(min_room_area_m2 >= 0.0)) throw OptionError("segmentation.min_room_area_m2 must be >= 0");
+  if (!(min_isolated_area_m2 >= 0.0)) throw OptionError("segmentation.min_isolated_area_m2 must be >= 0");
+}
+
+std::vector<ParameterRef> RoomSegmenterOptions::parameters() {
+  return {
+      {"furniture_max_area_m2", &furniture_max_area_m2, "enclosed obstacle blobs up to this area are filled [m^2]"},
+      {"furniture_max_extent_m", &furniture_max_extent_m, "... and up to this bounding-box side [m]"},
+      {"door_cut_min_width_m", &door_cut_min_width_m, "gaps in straight walls at least this wide ... [m]"},
+      {"door_cut_max_width_m", &door_cut_max_width_m, "... and at most this wide are doors, cut first (0: off) [m]"},
+      {"wall_extension_max_m", &wall_extension_max_m, "a wall end is extended across gaps up to this long (0: off) [m]"},
+      {"jamb_min_length_m", &jamb_min_length_m, "a wall end counts as a door jamb when this long [m]"},
+      {"wall_max_thickness_m", &wall_max_thickness_m, "... and at most this thick [m]"},
+      {"door_max_width_m", &door_max_width_m, "necks wider than this never separate rooms [m]"},
+      {"neck_ratio", &neck_ratio, "a neck separates cores when its half-width <= ratio * both cores' clearance"},
+      {"min_core_clearance_m", &min_core_clearance_m, "a room core is at least this far from walls [m]"},
+      {"min_room_area_m2", &min_room_area_m2, "smaller segments merge into a neighbour [m^2]"},
+      {"min_isolated_area_m2", &min_isolated_area_m2, "smaller free patches without neighbours are no room [m^2]"},
+  };
+}
+
+RoomSegmenter::RoomSegmenter(const RoomSegmenterOptions& options) : options_(options) { options_.validate(); }
+
+RoomSegmentation RoomSegmenter::segment(const OccupancyGrid& grid) const {
+  return segment(maps::stateImage(grid), grid.geometry().resolution_m());
+}
+
+RoomSegmentation RoomSegmenter::segment(const cv::Mat& states, double resolution_m) const {
+  if (states.type() != CV_8U) throw InvalidArgument("RoomSegmenter: states must be CV_8U");
+  if (!(resolution_m > 0.0)) throw InvalidArgument("RoomSegmenter: resolution must be > 0");
+  RoomSegmentation result;
+  result.labels = cv::Mat::zeros(states.size(), CV_32S);
+  if (states.empty()) return result;
+  // Work on the known part only (a partial map is mostly unknown).
+  const cv::Rect known = maps::knownBounds(states, 2);
+  if (known.empty()) return result;
+  if (known.size() != states.size()) {
+    RoomSegmentation crop = segment(states(known).clone(), resolution_m);
+    crop.labels.copyTo(result.labels(known));
+    result.room_count = crop.room_count;
+    return result;
+  }
+
+  const double cell_area = resolution_m * resolution_m;
+  const cv::Mat space_raw =
+      maps::fillableFreeSpace(states, static_cast<int>(options_.furniture_max_area_m2 / cell_area),
+                              static_cast<int>(std::ceil(options_.furniture_max_extent_m / resolution_m)));
+  // A one-cell frame of non-space lets the loops below skip bounds checks.
+  cv::Mat space;
+  cv::copyMakeBorder(space_raw, space, 1, 1, 1, 1, cv::BORDER_CONSTANT, 0);
+  // Doors found as gaps in straight walls are cut before the cores are sought.
+  const cv::Mat cuts = doorCuts(space, static_cast<int>(std::lround(options_.door_cut_min_width_m / resolution_m)),
+                                static_cast<int>(std::lround(options_.door_cut_max_width_m / resolution_m)),
+                                static_cast<int>(std::lround(options_.wall_extension_max_m / resolution_m)),
+                                std::max(1, static_cast<int>(std::lround(options_.jamb_min_length_m / resolution_m))),
+                                std::max(1, static_cast<int>(std::lround(options_.wall_max_thickness_m / resolution_m))));
+  cv::Mat cut_space = space & ~cuts;
+  cv::Mat dist;
+  cv::distanceTransform(cut_space, dist, cv::DIST_L2, cv::DIST_MASK_PRECISE, CV_32F);
+
+  const int w = space.cols;
+  const int n = space.rows * space.cols;
+  const std::uint8_t* sp = space.ptr<std::uint8_t>(0);
+  const std::uint8_t* csp = cut_space.ptr<std::uint8_t>(0);
+  const float* dp = dist.ptr<float>(0);
+  std::vector<int> bin(n, 0);
+  int max_bin = 0;
+  for (int i = 0; i < n; ++i) {
+    if (!sp[i]) continue;
+    bin[i] = static_cast<int>(dp[i] * kBinsPerCell);  // 0 on the cuts
+    max_bin = std::max(max_bin, bin[i]);
+  }
+  // Space cells sorted by decreasing clearance (counting sort).
+  std::vector<int> start(max_bin + 2, 0);
+  for (int i = 0; i < n; ++i) {
+    if (csp[i]) ++start[max_bin - bin[i] + 1];
+  }
+  std::partial_sum(start.begin(), start.end(), start.begin());
+  std::vector<int> order(start.back());
+  for (int i = 0; i < n; ++i) {
+    if (csp[i]) order[start[max_bin - bin[i]]++] = i;
+  }
+
+  const double per_cell = kBinsPerCell / resolution_m;
+  const int door_bin = static_cast<int>(0.5 * options_.door_max_width_m * per_cell);
+  const int core_bin = static_cast<int>(options_.min_core_clearance_m * per_cell);
+  const int min_room_cells = static_cast<int>(options_.min_room_area_m2 / cell_area);
+  const int min_isolated_cells = static_cast<int>(options_.min_isolated_area_m2 / cell_area);
+  const double ratio = options_.neck_ratio;
+  const int offsets[4] = {1, -1, w, -w};
+
+  // Sweep of the superlevel sets of clearance (union-find). When a neck joins two components
+  // that are both rooms (large enough, with a core far from walls) and the neck is narrow
+  // for both, each becomes a core, unless it holds cores already.
+  std::vector<int> parent(n, -1), area(n, 0), peak(n, 0), peak_cell(n, 0);
+  std::vector<std::uint8_t> has_core(n, 0);
+  std::vector<Core> cores;
+  auto isRoom = [&](int r) { return area[r] >= min_room_cells && peak[r] >= core_bin; };
+  for (const int p : order) {
+    parent[p] = p;
+    area[p] = 1;
+    peak[p] = bin[p];
+    peak_cell[p] = p;
+    const int level = bin[p];
+    for (const int off : offsets) {
+      const int q = p + off;
+      if (parent[q] < 0) continue;
+      int a = findRoot(parent, p), b = findRoot(parent, q);
+      if (a == b) continue;
+      if (level <= door_bin && isRoom(a) && isRoom(b) && level <= ratio * peak[a] && level <= ratio * peak[b]) {
+        for (const int r : {a, b}) {
+          if (!has_core[r]) cores.push_back({peak_cell[r], level});
+          has_core[r] = 1;
+        }
+      }
+      if (area[a] < area[b]) std::swap(a, b);
+      parent[b] = a;
+      area[a] += area[b];
+      if (peak[b] > peak[a]) {
+        peak[a] = peak[b];
+        peak_cell[a] = peak_cell[b];
+      }
+      has_core[a] = has_core[a] || has_core[b];
+    }
+  }
+  for (const int p : order) {
+    if (parent[p] == p && !has_core[p] && area[p] >= min_isolated_cells) cores.push_back({peak_cell[p], -1});
+  }
+
+  // Cores become labels; they grow back into all of the space by decreasing clearance.
+  std::vector<int> label(n, 0);
+  std::vector<std::vector<int>> buckets(max_bin + 1);
+  std::vector<int> stack;
+  for (std::size_t k = 0; k < cores.size(); ++k) {
+    const int id = static_cast<int>(k) + 1;
+    stack.assign(1, cores[k].pixel);
+    label[cores[k].pixel] = id;
+    while (!stack.empty()) {
+      const int p = stack.back();
+      stack.pop_back();
+      buckets[bin[p]].push_back(p);
+      for (const int off : offsets) {
+        const int q = p + off;
+        if (csp[q] && !label[q] && bin[q] > cores[k].level) {
+          label[q] = id;
+          stack.push_back(q);
+        }
+      }
+    }
+  }
+  for (int level = max_bin; level >= 0; --level) {
+    // Cells pushed while this level is processed land in this same bucket: index, not iterate.
+    for (std::size_t i = 0; i < buckets[level].size(); ++i) {
+      const int p = buckets[level][i];
+      for (const int off : offsets) {
+        const int q = p + off;
+        if (sp[q] && !label[q]) {
+          label[q] = label[p];
+          buckets[std::min(level, bin[q])].push_back(q);
+        }
+      }
+    }
+    std::vector<int>().swap(buckets[level]);
+  }
+
+  // Merge small segments into the neighbour they share the longest border with.
+  const int count = static_cast<int>(cores.size());
+  std::vector<int> seg_area(count + 1, 0);
+  std::vector<std::map<int, int>> border(count + 1);
+  const std::uint8_t* st = nullptr;
+  for (int y = 1; y + 1 < space.rows; ++y) {
+    st = states.ptr<std::uint8_t>(y - 1);
+    for (int x = 1; x + 1 < w; ++x) {
+      const int p = y * w + x;
+      const int l = label[p];
+      if (!l) continue;
+      if (st[x - 1] == static_cast<std::uint8_t>(CellState::kFree)) ++seg_area[l];
+      for (const int q : {p + 1, p + w}) {
+        if (label[q] && label[q] != l) {
+          ++border[l][label[q]];
+          ++border[label[q]][l];
+        }
+      }
+    }
+  }
+  std::vector<int> merged_into(count + 1);
+  std::iota(merged_into.begin(), merged_into.end(), 0);
+  auto rep = [&](int l) {
+    while (merged_into[l] != l) l = merged_into[l] = merged_into[merged_into[l]];
+    return l;
+  };
+  std::vector<int> by_area(count);
+  std::iota(by_area.begin(), by_area.end(), 1);
+  std::stable_sort(by_area.begin(), by_area.end(), [&](int a, int b) { return seg_area[a] < seg_area[b]; });
+  for (const int s : by_area) {
+    if (rep(s) != s || seg_area[s] >= min_room_cells) continue;
+    int best = 0, best_len = 0;
+    std::map<int, int> total;
+    for (const auto& [nb, len] : border[s]) {
+      const int r = rep(nb);
+      if (r != s) total[r] += len;
+    }
+    for (const auto& [r, len] : total) {
+      if (len > best_len) {
+        best = r;
+        best_len = len;
+      }
+    }
+    if (!best) continue;
+    merged_into[s] = best;
+    seg_area[best] += seg_area[s];
+    for (const auto& [nb, len] : total) {
+      if (nb != best) {
+        border[best][nb] += len;
+        border[nb][best] += len;
+      }
+    }
+  }
+
+  // Only free cells carry labels; number rooms in row-major order of first appearance.
+  std::vector<int> final_id(count + 1, -1);
+  final_id[0] = 0;
+  int next = 0;
+  for (int y = 0; y < states.rows; ++y) {
+    const auto* srow = states.ptr<std::uint8_t>(y);
+    int* out = result.labels.ptr<int>(y);
+    for (int x = 0; x < states.cols; ++x) {
+      if (srow[x] != static_cast<std::uint8_t>(CellState::kFree)) continue;
+      const int l = label[(y + 1) * w + x + 1];
+      if (!l) continue;
+      const int r = rep(l);
+      if (seg_area[r] < min_isolated_cells) continue;
+      if (final_id[r] < 0) final_id[r] = ++next;
+      out[x] = final_id[r];
+    }
+  }
+  result.room_count = next;
+  return result;
+}
+
+}  // namespace roomscout

@@ -1,0 +1,69 @@
+#pragma once
+// Splits the free space of an occupancy grid into rooms.
+//
+// The paper builds its semantic map with ROSE² (Luperto et al., RA-L 2022): wall directions,
+// wall lines and cells merged into rooms. What we ship is the method that scored best on the
+// room segmentation benchmark of Bormann et al. (ICRA 2016), measured with `segment-eval`:
+// a persistence-based watershed of the distance transform. Every room has a core far from its
+// walls; two cores are kept apart when the neck that joins them (a door) is narrow both in
+// absolute terms and relative to the cores' own clearance. Cores grow back into the whole
+// free space along decreasing clearance, so borders fall on the narrowest place between two
+// rooms: the door. Small pieces merge into their neighbour across their longest border.
+// Furniture blobs enclosed by free space are filled first so that they do not cut rooms.
+//
+// Unknown space counts as a border (neither wall nor room), so the method works on partial
+// maps during exploration.
+
+#include <vector>
+
+#include <opencv2/core/mat.hpp>
+
+#include "roomscout/core/occupancy_grid.hpp"
+#include "roomscout/core/parameters.hpp"
+
+namespace roomscout {
+
+struct RoomSegmenterOptions {
+  double furniture_max_area_m2 = 1.0;    ///< enclosed obstacle blobs up to this area are filled [m^2]
+  double furniture_max_extent_m = 2.0;   ///< ... and up to this bounding-box side [m]
+  double door_cut_min_width_m = 0.5;    ///< gaps in straight walls at least this wide ... [m]
+  double door_cut_max_width_m = 2.0;    ///< ... and at most this wide are doors, cut first [m]
+  double wall_extension_max_m = 1.5;    ///< a wall end is extended across a gap up to this
+                                        ///< long to any obstacle: a wide opening (0: off) [m]
+  double jamb_min_length_m = 0.3;       ///< a wall end counts as a door jamb when this long [m]
+  double wall_max_thickness_m = 0.4;    ///< ... and at most this thick [m]
+  double door_max_width_m = 1.6;         ///< necks wider than this never separate rooms [m]
+  double neck_ratio = 0.75;              ///< a neck separates two cores when its half-width is at
+                                         ///< most this fraction of both cores' clearance
+  double min_core_clearance_m = 0.45;    ///< a room core is at least this far from walls [m]
+  double min_room_area_m2 = 2.0;         ///< smaller segments merge into a neighbour [m^2]
+  double min_isolated_area_m2 = 0.5;     ///< smaller free patches without neighbours are no room [m^2]
+
+  /// Throws OptionError when a value is out of range.
+  void validate() const;
+  std::vector<ParameterRef> parameters();
+};
+
+/// A segmentation: CV_32S labels of the input's size, 0 = no room, 1..room_count = rooms.
+struct RoomSegmentation {
+  cv::Mat labels;
+  int room_count = 0;
+};
+
+/// Stateless room segmentation of one map; thread-safe (const).
+class RoomSegmenter final {
+ public:
+  explicit RoomSegmenter(const RoomSegmenterOptions& options = {});
+  const RoomSegmenterOptions& options() const { return options_; }
+
+  /// @param states CV_8U image of CellState values (any orientation)
+  /// @param resolution_m cell side [m]
+  /// Only free cells get a room label.
+  RoomSegmentation segment(const cv::Mat& states, double resolution_m) const;
+  RoomSegmentation segment(const OccupancyGrid& grid) const;
+
+ private:
+  RoomSegmenterOptions options_;
+};
+
+}  // namespace roomscout

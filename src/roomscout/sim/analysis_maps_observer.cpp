@@ -1,0 +1,86 @@
+#include "roomscout/sim/analysis_maps_observer.hpp"
+
+#include <chrono>
+#include <cmath>
+
+#include "roomscout/core/errors.hpp"
+#include "roomscout/maps/grid_image.hpp"
+
+namespace roomscout::sim {
+
+void AnalysisMapsOptions::validate() const {
+  if (!(period_s > 0.0)) throw OptionError("maps.period_s must be > 0");
+  if (!(min_new_area_m2 >= 0.0)) throw OptionError("maps.min_new_area_m2 must be >= 0");
+  segmentation.validate();
+  topology.validate();
+}
+
+std::vector<ParameterRef> AnalysisMapsOptions::parameters() {
+  return {
+      {"period_s", &period_s, "simulated time between update checks [s]"},
+      {"min_new_area_m2", &min_new_area_m2, "newly known area that triggers an update [m^2]"},
+  };
+}
+
+AnalysisMapsObserver::AnalysisMapsObserver(AnalysisMapKind kind, const AnalysisMapsOptions& options,
+                                           const AnalysisMapsObserver* rooms)
+    : kind_(kind),
+      options_(options),
+      rooms_(rooms),
+      segmenter_(options.segmentation),
+      builder_(options.topology) {
+  options_.validate();
+}
+
+std::string_view AnalysisMapsObserver::name() const {
+  return kind_ == AnalysisMapKind::kSemantic ? "semantic" : "topological";
+}
+
+const SemanticMap* AnalysisMapsObserver::semanticMap() const {
+  return kind_ == AnalysisMapKind::kSemantic ? &semantic_ : nullptr;
+}
+
+namespace {
+
+std::size_t knownCells(const OccupancyGrid& grid) {
+  std::size_t known = 0;
+  const std::size_t n = grid.geometry().cellCount();
+  for (std::size_t i = 0; i < n; ++i) known += grid.isUnknown(i) ? 0 : 1;
+  return known;
+}
+
+}  // namespace
+
+void AnalysisMapsObserver::onStep(const EpisodeSnapshot& snapshot) {
+  changed_ = changed_ || snapshot.grid_changed;
+  if (snapshot.time_s + 1e-9 < next_update_s_ || !changed_) return;
+  next_update_s_ = snapshot.time_s + options_.period_s;
+  const std::size_t known = knownCells(snapshot.grid);
+  const double res = snapshot.grid.geometry().resolution_m();
+  const double new_area_m2 =
+      std::abs(static_cast<double>(known) - static_cast<double>(known_at_update_)) * res * res;
+  if (updated_once_ && new_area_m2 < options_.min_new_area_m2) return;
+  known_at_update_ = known;
+  update(snapshot.grid);
+}
+
+void AnalysisMapsObserver::onFinish(const EpisodeSnapshot& snapshot) {
+  if (changed_ || snapshot.grid_changed || !updated_once_) update(snapshot.grid);
+}
+
+void AnalysisMapsObserver::update(const OccupancyGrid& grid) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const cv::Mat states = maps::stateImage(grid);
+  if (kind_ == AnalysisMapKind::kSemantic) {
+    const RoomSegmentation seg = segmenter_.segment(states, grid.geometry().resolution_m());
+    semantic_.update(grid.geometry(), seg.labels, states);
+  } else {
+    const SemanticMap* rooms = rooms_ ? rooms_->semanticMap() : nullptr;
+    topology_ = builder_.build(states, grid.geometry(), rooms);
+  }
+  update_ms_.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+  changed_ = false;
+  updated_once_ = true;
+}
+
+}  // namespace roomscout::sim

@@ -1,0 +1,66 @@
+#pragma once
+// The paper's topological and semantic maps, rebuilt from the occupancy grid during an
+// episode on their own period (about once a simulated second, as in the paper). One class,
+// two instances: the semantic one ("semantic") owns the rooms that strategies read; the
+// topological one ("topological") builds the skeleton graph and, given the semantic one,
+// labels its nodes with room ids. Attach the semantic observer first.
+
+#include <string_view>
+#include <vector>
+
+#include "roomscout/maps/room_segmenter.hpp"
+#include "roomscout/maps/semantic_map.hpp"
+#include "roomscout/maps/topological_map.hpp"
+#include "roomscout/maps/topology_builder.hpp"
+#include "roomscout/sim/episode_observer.hpp"
+
+namespace roomscout::sim {
+
+enum class AnalysisMapKind { kTopological, kSemantic };
+
+struct AnalysisMapsOptions {
+  double period_s = 1.0;  ///< simulated time between update checks [s]
+  double min_new_area_m2 = 2.0;  ///< update only when at least this much of the grid became
+                                 ///< known since the last update [m^2]: re-traversing known
+                                 ///< space changes nothing worth 40-80 ms of analysis
+  RoomSegmenterOptions segmentation;
+  TopologyBuilderOptions topology;
+  void validate() const;
+  /// The schedule options (period_s, min_new_area_m2); the algorithms have their own groups.
+  std::vector<ParameterRef> parameters();
+};
+
+class AnalysisMapsObserver final : public EpisodeObserver {
+ public:
+  /// @param rooms for the topological kind: the semantic observer whose rooms label the
+  ///        nodes (borrowed; may be null)
+  AnalysisMapsObserver(AnalysisMapKind kind, const AnalysisMapsOptions& options = {},
+                       const AnalysisMapsObserver* rooms = nullptr);
+
+  std::string_view name() const override;
+  void onStep(const EpisodeSnapshot& snapshot) override;
+  void onFinish(const EpisodeSnapshot& snapshot) override;
+  const std::vector<double>& updateTimes_ms() const override { return update_ms_; }
+  /// The rooms (semantic kind only; nullptr for the topological kind).
+  const SemanticMap* semanticMap() const override;
+  /// The skeleton graph (topological kind; empty for the semantic kind).
+  const TopologicalMap& topologicalMap() const { return topology_; }
+
+ private:
+  void update(const OccupancyGrid& grid);
+
+  AnalysisMapKind kind_;
+  AnalysisMapsOptions options_;
+  const AnalysisMapsObserver* rooms_;
+  RoomSegmenter segmenter_;
+  TopologyBuilder builder_;
+  SemanticMap semantic_;
+  TopologicalMap topology_;
+  std::vector<double> update_ms_;
+  double next_update_s_ = 0.0;
+  bool changed_ = false;
+  std::size_t known_at_update_ = 0;
+  bool updated_once_ = false;
+};
+
+}  // namespace roomscout::sim

@@ -1,0 +1,230 @@
+#include "roomscout/sim/lidar_simulator.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <limits>
+#include <numeric>
+
+#include "roomscout/core/errors.hpp"
+
+namespace roomscout::sim {
+
+void LidarOptions::validate() const {
+  if (num_rings < 1 || num_rings > 64) throw OptionError("lidar.num_rings must be in [1, 64]");
+  if (!(elevation_min_deg >= -89.0 && elevation_max_deg <= 89.0 && elevation_min_deg <= elevation_max_deg)) {
+    throw OptionError("lidar: need -89 <= elevation_min_deg <= elevation_max_deg <= 89");
+  }
+  if (num_rings > 1 && !(elevation_min_deg < elevation_max_deg)) {
+    throw OptionError("lidar: several rings need elevation_min_deg < elevation_max_deg");
+  }
+  if (!(azimuth_step_deg >= 0.01 && azimuth_step_deg <= 90.0)) {
+    throw OptionError("lidar.azimuth_step_deg must be in [0.01, 90]");
+  }
+  if (!(range_min_m >= 0.0 && range_min_m < range_max_m)) {
+    throw OptionError("lidar: need 0 <= range_min_m < range_max_m");
+  }
+  if (!(rate_hz > 0.0)) throw OptionError("lidar.rate_hz must be > 0");
+  if (!(mount_height_m > 0.0)) throw OptionError("lidar.mount_height_m must be > 0");
+  if (!(range_noise_m >= 0.0)) throw OptionError("lidar.range_noise_m must be >= 0");
+}
+
+std::vector<ParameterRef> LidarOptions::parameters() {
+  return {
+      {"num_rings", &num_rings, "beams per azimuth column"},
+      {"elevation_min_deg", &elevation_min_deg, "lowest ring's elevation [deg]"},
+      {"elevation_max_deg", &elevation_max_deg, "highest ring's elevation [deg]"},
+      {"azimuth_step_deg", &azimuth_step_deg, "azimuth between columns [deg]"},
+      {"range_min_m", &range_min_m, "minimum range [m]"},
+      {"range_max_m", &range_max_m, "maximum range [m]"},
+      {"rate_hz", &rate_hz, "revolutions per second"},
+      {"mount_height_m", &mount_height_m, "sensor height above the floor [m]"},
+      {"range_noise_m", &range_noise_m, "standard deviation of Gaussian range noise [m]"},
+  };
+}
+
+LidarSimulator::LidarSimulator(const ColumnWorld& world, const LidarOptions& options, std::uint64_t seed)
+    : world_(world), options_(options), rng_(seed) {
+  options_.validate();
+  const double deg = M_PI / 180.0;
+  for (int k = 0; k < options_.num_rings; ++k) {
+    const double e = options_.num_rings == 1
+                         ? options_.elevation_min_deg
+                         : options_.elevation_min_deg +
+                               (options_.elevation_max_deg - options_.elevation_min_deg) * k / (options_.num_rings - 1);
+    elevations_rad_.push_back(e * deg);
+  }
+  const int n_columns = std::max(1, static_cast<int>(std::lround(360.0 / options_.azimuth_step_deg)));
+  for (int c = 0; c < n_columns; ++c) {
+    const double a = 2.0 * M_PI * c / n_columns;
+    cos_azimuth_.push_back(std::cos(a));
+    sin_azimuth_.push_back(std::sin(a));
+  }
+}
+
+Eigen::Isometry3d LidarSimulator::sensorPose(const Pose2& T_map_robot) const {
+  Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+  T.linear() = Eigen::AngleAxisd(T_map_robot.yaw_rad, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  T.translation() = Eigen::Vector3d(T_map_robot.x_m, T_map_robot.y_m, world_.floor_m() + options_.mount_height_m);
+  return T;
+}
+
+std::vector<LidarSimulator::Ring> LidarSimulator::makeRings(const std::vector<double>& elevations_rad, double z_m,
+                                                            double max_range_m, std::vector<int>& order) const {
+  std::vector<Ring> rings;
+  const double inf = std::numeric_limits<double>::infinity();
+  for (double e : elevations_rad) {
+    Ring r;
+    r.slope = std::tan(e);
+    r.cos_elev = std::cos(e);
+    double t_plane = inf;
+    r.plane_surface = LidarSurface::kObject;
+    if (r.slope > 0.0) {
+      t_plane = (world_.ceiling_m() - z_m) / r.slope;
+      r.plane_surface = LidarSurface::kCeiling;
+    } else if (r.slope < 0.0) {
+      t_plane = (world_.floor_m() - z_m) / r.slope;
+      r.plane_surface = LidarSurface::kFloor;
+    }
+    const double t_range = max_range_m * r.cos_elev;
+    r.plane_hit = t_plane <= t_range;
+    r.limit_m = std::max(0.0, std::min(t_plane, t_range));
+    rings.push_back(r);
+  }
+  order.resize(rings.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return rings[a].limit_m < rings[b].limit_m; });
+  return rings;
+}
+
+void LidarSimulator::castColumn(const Eigen::Vector2d& origin_m, double z_m, double cos_az, double sin_az,
+                                const std::vector<Ring>& rings, const std::vector<int>& order, double* hit_t_m,
+                                double* hit_dz_m, LidarSurface* hit_surface) const {
+  const int n = static_cast<int>(rings.size());
+  for (int k = 0; k < n; ++k) hit_t_m[k] = -1.0;
+  std::uint64_t active = n == 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << n) - 1;
+  std::size_t next_limit = 0;  // rings retire at their plane/range limit in this order
+  auto retireUpTo = [&](double t_m) {
+    while (next_limit < order.size() && rings[order[next_limit]].limit_m <= t_m) {
+      const int k = order[next_limit++];
+      const std::uint64_t bit = std::uint64_t{1} << k;
+      if (!(active & bit)) continue;
+      active &= ~bit;
+      if (rings[k].plane_hit) {
+        hit_t_m[k] = rings[k].limit_m;
+        hit_dz_m[k] = (rings[k].plane_surface == LidarSurface::kFloor ? world_.floor_m() : world_.ceiling_m()) - z_m;
+        hit_surface[k] = rings[k].plane_surface;
+      }
+    }
+  };
+
+  const GridGeometry& g = world_.geometry();
+  const double res = g.resolution_m();
+  const Eigen::Vector2d p = (origin_m - g.origin_m()) / res;
+  int x = static_cast<int>(std::floor(p.x()));
+  int y = static_cast<int>(std::floor(p.y()));
+  const int w = g.width(), h = g.height();
+  const double inf = std::numeric_limits<double>::infinity();
+  const int step_x = cos_az > 0 ? 1 : -1;
+  const int step_y = sin_az > 0 ? 1 : -1;
+  // DDA parameter in raster cells along the unit horizontal direction.
+  const double t_delta_x = cos_az != 0 ? std::abs(1.0 / cos_az) : inf;
+  const double t_delta_y = sin_az != 0 ? std::abs(1.0 / sin_az) : inf;
+  double t_max_x = cos_az != 0 ? (step_x > 0 ? (x + 1 - p.x()) : (p.x() - x)) * t_delta_x : inf;
+  double t_max_y = sin_az != 0 ? (step_y > 0 ? (y + 1 - p.y()) : (p.y() - y)) * t_delta_y : inf;
+  double t_in = 0.0;
+  while (active && x >= 0 && y >= 0 && x < w && y < h) {
+    const double t_out = std::min(t_max_x, t_max_y);
+    const double t_in_m = t_in * res, t_out_m = t_out * res;
+    const std::size_t cell = static_cast<std::size_t>(y) * w + x;
+    if (!world_.columnEmpty(cell)) {
+      const auto spans = world_.intervals(cell);
+      for (std::uint64_t bits = active; bits;) {
+        const int k = std::countr_zero(bits);
+        bits &= bits - 1;
+        const Ring& r = rings[k];
+        const double t_end = std::min(t_out_m, r.limit_m);
+        if (t_in_m > t_end) continue;
+        const double z_in = z_m + r.slope * t_in_m;
+        double t_hit = inf, dz_hit = 0.0;
+        for (const ZInterval& s : spans) {
+          if (s.z_min_m <= z_in && z_in <= s.z_max_m) {
+            t_hit = t_in_m;  // the column's side face
+            dz_hit = z_in - z_m;
+            break;
+          }
+          if (r.slope > 0.0 && z_in < s.z_min_m && (s.z_min_m - z_m) / r.slope < t_hit) {
+            t_hit = (s.z_min_m - z_m) / r.slope;  // an underside, going up
+            dz_hit = s.z_min_m - z_m;
+          } else if (r.slope < 0.0 && z_in > s.z_max_m && (s.z_max_m - z_m) / r.slope < t_hit) {
+            t_hit = (s.z_max_m - z_m) / r.slope;  // a top face, going down
+            dz_hit = s.z_max_m - z_m;
+          }
+        }
+        if (t_hit <= t_end) {
+          hit_t_m[k] = t_hit;
+          hit_dz_m[k] = dz_hit;
+          hit_surface[k] = LidarSurface::kObject;
+          active &= ~(std::uint64_t{1} << k);
+        }
+      }
+    }
+    retireUpTo(t_out_m);
+    if (t_max_x < t_max_y) {
+      t_max_x += t_delta_x;
+      x += step_x;
+    } else {
+      t_max_y += t_delta_y;
+      y += step_y;
+    }
+    t_in = t_out;
+  }
+  // Beyond the raster there is neither floor nor ceiling: remaining rings have no return.
+}
+
+LidarScan LidarSimulator::scan(const Pose2& T_map_robot) {
+  LidarScan scan;
+  scan.T_map_sensor = sensorPose(T_map_robot);
+  const double z_m = scan.T_map_sensor.translation().z();
+  std::vector<int> order;
+  const std::vector<Ring> rings = makeRings(elevations_rad_, z_m, options_.range_max_m, order);
+  const int n = static_cast<int>(rings.size());
+  std::vector<double> t(n), dz(n);
+  std::vector<LidarSurface> surface(n);
+  const double cy = std::cos(T_map_robot.yaw_rad), sy = std::sin(T_map_robot.yaw_rad);
+  const Eigen::Vector2d origin(T_map_robot.x_m, T_map_robot.y_m);
+  std::normal_distribution<double> noise(0.0, options_.range_noise_m);
+  const bool noisy = options_.range_noise_m > 0.0;
+  scan.points_sensor.reserve(static_cast<std::size_t>(columns()) * n);
+  scan.surfaces.reserve(scan.points_sensor.capacity());
+  for (int c = 0; c < columns(); ++c) {
+    const double ca = cos_azimuth_[c], sa = sin_azimuth_[c];
+    castColumn(origin, z_m, cy * ca - sy * sa, sy * ca + cy * sa, rings, order, t.data(), dz.data(),
+               surface.data());
+    for (int k = 0; k < n; ++k) {
+      if (t[k] < 0.0) continue;
+      const double r_true = t[k] / rings[k].cos_elev;
+      const double r = noisy ? r_true + noise(rng_) : r_true;
+      if (r < options_.range_min_m || r > options_.range_max_m) continue;
+      const double scale = r_true > 0.0 ? r / r_true : 0.0;  // noise moves the point along its beam
+      scan.points_sensor.emplace_back(static_cast<float>(scale * t[k] * ca), static_cast<float>(scale * t[k] * sa),
+                                      static_cast<float>(scale * dz[k]));
+      scan.surfaces.push_back(surface[k]);
+    }
+  }
+  return scan;
+}
+
+std::optional<LidarHit> LidarSimulator::castRay(const Eigen::Vector3d& origin_map, double azimuth_rad,
+                                                double elevation_rad, double max_range_m) const {
+  std::vector<int> order;
+  const std::vector<Ring> rings = makeRings({elevation_rad}, origin_map.z(), max_range_m, order);
+  double t = -1.0, dz = 0.0;
+  LidarSurface surface = LidarSurface::kObject;
+  castColumn(origin_map.head<2>(), origin_map.z(), std::cos(azimuth_rad), std::sin(azimuth_rad), rings, order, &t,
+             &dz, &surface);
+  if (t < 0.0) return std::nullopt;
+  return LidarHit{t / rings[0].cos_elev, surface};
+}
+
+}  // namespace roomscout::sim

@@ -1,0 +1,63 @@
+#include "roomscout/sim/point_cloud_observer.hpp"
+
+#include <chrono>
+#include <cstdio>
+
+namespace roomscout::sim {
+
+void PointCloudObserverOptions::validate() const {
+  lidar.validate();
+  map.validate();
+  keyframes.validate();
+}
+
+std::vector<ParameterGroup> PointCloudObserverOptions::groups() {
+  std::vector<ParameterRef> map_parameters = map.parameters();
+  map_parameters.push_back({"remove_floor_ceiling", &remove_floor_ceiling,
+                            "drop returns from the floor and ceiling planes"});
+  return {{"lidar", lidar.parameters()}, {"pointcloud", map_parameters}, {"keyframes", keyframes.parameters()}};
+}
+
+PointCloudObserver::PointCloudObserver(const WorldModel& world, const PointCloudObserverOptions& options,
+                                       std::uint64_t seed)
+    : options_(options),
+      columns_(std::make_unique<ColumnWorld>(world)),
+      lidar_(*columns_, options.lidar, seed),
+      keyframes_(options.keyframes),
+      map_(options.map) {
+  options_.validate();
+}
+
+void PointCloudObserver::onStep(const EpisodeSnapshot& snapshot) {
+  if (snapshot.time_s < next_scan_s_ - 1e-9) return;
+  next_scan_s_ += 1.0 / options_.lidar.rate_hz;
+  ++scans_;
+  // The keyframe rule needs only the pose, so revolutions that are not keyframes are not cast.
+  if (keyframes_.accept(snapshot.robot)) insertScan(snapshot.robot);
+}
+
+void PointCloudObserver::onFinish(const EpisodeSnapshot&) {}
+
+void PointCloudObserver::insertScan(const Pose2& T_map_robot) {
+  const auto start = std::chrono::steady_clock::now();
+  const LidarScan scan = lidar_.scan(T_map_robot);
+  const Eigen::Affine3f T_map_sensor = Eigen::Affine3f(scan.T_map_sensor.matrix().cast<float>());
+  points_map_.clear();
+  points_map_.reserve(scan.points_sensor.size());
+  for (std::size_t i = 0; i < scan.points_sensor.size(); ++i) {
+    if (options_.remove_floor_ceiling && scan.surfaces[i] != LidarSurface::kObject) continue;
+    points_map_.push_back(T_map_sensor * scan.points_sensor[i]);
+  }
+  map_.insert(points_map_);
+  update_ms_.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+}
+
+std::string PointCloudObserver::description() const {
+  char buf[256];
+  std::snprintf(buf, sizeof buf, "%s; voxel %g m; %s; floor and ceiling %s",
+                "simulated VLP-16", options_.map.voxel_size_m, options_.keyframes.describe().c_str(),
+                options_.remove_floor_ceiling ? "removed" : "kept");
+  return buf;
+}
+
+}  // namespace roomscout::sim

@@ -1,0 +1,149 @@
+#include "roomscout/io/pcd_io.hpp"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "roomscout/core/errors.hpp"
+#include "roomscout/exploration/strategy_registry.hpp"
+#include "roomscout/io/atomic_file.hpp"
+#include "roomscout/io/map_server.hpp"
+#include "roomscout/sim/episode.hpp"
+#include "roomscout/sim/point_cloud_observer.hpp"
+#include "test_support.hpp"
+
+namespace roomscout::io {
+namespace {
+
+std::vector<Eigen::Vector3f> randomCloud(int n) {
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<float> u(-20.0f, 20.0f);
+  std::vector<Eigen::Vector3f> points;
+  for (int i = 0; i < n; ++i) points.emplace_back(u(rng), u(rng), u(rng) * 0.1f);
+  return points;
+}
+
+std::pair<Eigen::Vector3f, Eigen::Vector3f> boundsOf(const std::vector<Eigen::Vector3f>& points) {
+  Eigen::Vector3f lo = points.front(), hi = points.front();
+  for (const auto& p : points) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+  return {lo, hi};
+}
+
+TEST(PcdIo, RoundTripInEveryFormat) {
+  test::TempDir dir;
+  const std::vector<Eigen::Vector3f> points = randomCloud(5000);
+  const auto [lo, hi] = boundsOf(points);
+  for (PcdFormat format : {PcdFormat::kAscii, PcdFormat::kBinary, PcdFormat::kBinaryCompressed}) {
+    const auto path = dir / ("cloud_" + std::string(pcdFormatName(format)) + ".pcd");
+    writePcdAtomic(path, points, format, "keyframes: every 1 m or 0.2 rad\nsecond line");
+    const std::vector<Eigen::Vector3f> back = readPcd(path);
+    ASSERT_EQ(back.size(), points.size());
+    const auto [lo2, hi2] = boundsOf(back);
+    EXPECT_TRUE(lo2.isApprox(lo, 1e-5f)) << pcdFormatName(format);
+    EXPECT_TRUE(hi2.isApprox(hi, 1e-5f)) << pcdFormatName(format);
+    for (std::size_t i = 0; i < points.size(); i += 97) EXPECT_TRUE(back[i].isApprox(points[i], 1e-6f));
+    const std::string bytes = readFile(path);
+    EXPECT_NE(bytes.find("# keyframes: every 1 m or 0.2 rad second line\n"), std::string::npos);
+    EXPECT_NE(bytes.find("DATA " + std::string(pcdFormatName(format))), std::string::npos);
+    EXPECT_NE(bytes.find("VIEWPOINT 0 0 0 1 0 0 0"), std::string::npos);
+  }
+  // No temporary file is left behind.
+  int files = 0;
+  for ([[maybe_unused]] const auto& e : std::filesystem::directory_iterator(dir.path())) ++files;
+  EXPECT_EQ(files, 3);
+}
+
+TEST(PcdIo, PrecisionRoundsAndSortsWithinHalfAStep) {
+  test::TempDir dir;
+  const std::vector<Eigen::Vector3f> points = randomCloud(20000);
+  writePcdAtomic(dir / "exact.pcd", points, PcdFormat::kBinaryCompressed);
+  writePcdAtomic(dir / "rounded.pcd", points, PcdFormat::kBinaryCompressed, {}, 0.005);
+  const std::vector<Eigen::Vector3f> back = readPcd(dir / "rounded.pcd");
+  ASSERT_EQ(back.size(), points.size());
+  const auto [lo, hi] = boundsOf(points);
+  const auto [lo2, hi2] = boundsOf(back);
+  EXPECT_LE((lo2 - lo).cwiseAbs().maxCoeff(), 0.0025f + 1e-5f);
+  EXPECT_LE((hi2 - hi).cwiseAbs().maxCoeff(), 0.0025f + 1e-5f);
+  for (std::size_t i = 1; i < back.size(); ++i) ASSERT_LE(back[i - 1].x(), back[i].x());
+  EXPECT_LT(std::filesystem::file_size(dir / "rounded.pcd"), std::filesystem::file_size(dir / "exact.pcd"));
+  EXPECT_THROW(writePcdAtomic(dir / "bad.pcd", points, PcdFormat::kBinary, {}, -1.0), InvalidArgument);
+}
+
+TEST(PcdIo, EmptyCloudAndErrors) {
+  test::TempDir dir;
+  writePcdAtomic(dir / "empty.pcd", {}, PcdFormat::kBinaryCompressed);
+  EXPECT_TRUE(readPcd(dir / "empty.pcd").empty());
+  EXPECT_THROW(readPcd(dir / "missing.pcd"), InputError);
+  dir.write("garbage.pcd", "not a point cloud\n");
+  EXPECT_THROW(readPcd(dir / "garbage.pcd"), InputError);
+  EXPECT_THROW(writePcdAtomic(dir / "no_such_dir" / "x.pcd", randomCloud(3), PcdFormat::kBinary), InputError);
+  EXPECT_EQ(parsePcdFormat("ascii"), PcdFormat::kAscii);
+  EXPECT_EQ(parsePcdFormat("binary_compressed"), PcdFormat::kBinaryCompressed);
+  EXPECT_THROW(parsePcdFormat("ply"), OptionError);
+}
+
+/// A small furnished world: two rooms joined by a door with a lintel, a table and a cupboard.
+sim::World smallWorld() {
+  sim::World w;
+  w.name = "pcd_frame";
+  w.source = "test:pcd_frame";
+  const double t = 0.15;
+  w.walls = {{{0, 0}, {8, 0}, t, 0, 2.5}, {{8, 0}, {8, 5}, t, 0, 2.5}, {{8, 5}, {0, 5}, t, 0, 2.5},
+             {{0, 5}, {0, 0}, t, 0, 2.5}, {{4, 0}, {4, 2.0}, t, 0, 2.5}, {{4, 3.0}, {4, 5}, t, 0, 2.5},
+             {{4, 2.0}, {4, 3.0}, t, 2.0, 2.5}};
+  w.doors = {{{4, 2.5}, 1.0}};
+  w.furniture = {{"cupboard", {{6.5, 4.0}, {7.8, 4.0}, {7.8, 4.8}, {6.5, 4.8}}, 0.0, 2.0},
+                 {"table_top", {{1.0, 1.0}, {2.0, 1.0}, {2.0, 2.0}, {1.0, 2.0}}, 0.71, 0.75}};
+  w.rooms = {{1, "west", {{0, 0}, {4, 0}, {4, 5}, {0, 5}}}, {2, "east", {{4, 0}, {8, 0}, {8, 5}, {4, 5}}}};
+  w.start = {2.0, 3.5, 0.0};
+  w.start_given = true;
+  return w;
+}
+
+TEST(PcdIo, PointCloudAndOccupancyYamlShareTheirFrame) {
+  test::TempDir dir;
+  const sim::WorldModel model(smallWorld());
+  sim::EpisodeConfig config;
+  config.episode.max_time_s = 240.0;
+  auto strategy = createStrategy("nearest_frontier", 1);
+  sim::PointCloudObserver cloud(model, {}, 3);
+  const sim::EpisodeResult result = sim::runEpisode(model, config, *strategy, 1, {}, {&cloud});
+  ASSERT_GT(cloud.map().size(), 1000u);
+  ASSERT_GT(cloud.keyframes(), 3);
+  saveOccupancyMap(result.map, dir / "occupancy.yaml");
+  writePcdAtomic(dir / "pointcloud.pcd", cloud.map().points(), PcdFormat::kBinaryCompressed, "test", 0.005);
+
+  const OccupancyGrid grid = loadOccupancyMap(dir / "occupancy.yaml");
+  const std::vector<Eigen::Vector3f> points = readPcd(dir / "pointcloud.pcd");
+  ASSERT_EQ(points.size(), cloud.map().size());
+  const GridGeometry& g = grid.geometry();
+  // Points between 0.3 m and 0.6 m high are walls and the cupboard, which the 2D laser (at
+  // 0.18 m) sees too: where the grid knows their cell, it is occupied (or next to one).
+  int known = 0, on_occupied = 0;
+  for (const Eigen::Vector3f& p : points) {
+    if (p.z() < 0.3f || p.z() > 0.6f) continue;
+    const Cell c = g.cellOf(Vec2(p.x(), p.y()));
+    ASSERT_TRUE(g.contains(c)) << p.transpose();
+    bool any_known = false, near_occupied = false;
+    for (int dy = -1; dy <= 1; ++dy) {
+      for (int dx = -1; dx <= 1; ++dx) {
+        const Cell n{c.x + dx, c.y + dy};
+        if (!g.contains(n)) continue;
+        any_known |= grid.state(n) != CellState::kUnknown;
+        near_occupied |= grid.state(n) == CellState::kOccupied;
+      }
+    }
+    if (!any_known) continue;
+    ++known;
+    on_occupied += near_occupied;
+  }
+  ASSERT_GT(known, 500);
+  EXPECT_GE(on_occupied, 0.97 * known) << on_occupied << " of " << known;
+  // And every point lies on a ground-truth surface (centroids of 0.05 m voxels, rounded).
+  for (const Eigen::Vector3f& p : points) {
+    ASSERT_TRUE(cloud.columns().nearSurface(p.cast<double>(), 0.05)) << p.transpose();
+  }
+}
+
+}  // namespace
+}  // namespace roomscout::io
