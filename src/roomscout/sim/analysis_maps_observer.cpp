@@ -53,6 +53,15 @@ std::size_t knownCells(const OccupancyGrid& grid) {
 
 void AnalysisMapsObserver::onStep(const EpisodeSnapshot& snapshot) {
   changed_ = changed_ || snapshot.grid_changed;
+  if (kind_ == AnalysisMapKind::kTopological && rooms_ != nullptr) {
+    // Follow the schedule of the rooms that label the nodes: rebuild right after they were
+    // rebuilt, instead of counting the known cells a second time for the same decision.
+    if (rooms_->update_ms_.size() != rooms_updates_seen_) {
+      rooms_updates_seen_ = rooms_->update_ms_.size();
+      update(snapshot.grid);
+    }
+    return;
+  }
   if (snapshot.time_s + 1e-9 < next_update_s_ || !changed_) return;
   next_update_s_ = snapshot.time_s + options_.period_s;
   const std::size_t known = knownCells(snapshot.grid);

@@ -60,6 +60,7 @@ class AnalysisMapsObserver final : public EpisodeObserver {
   double next_update_s_ = 0.0;
   bool changed_ = false;
   std::size_t known_at_update_ = 0;
+  std::size_t rooms_updates_seen_ = 0;  ///< topological kind: updates of rooms_ already followed
   bool updated_once_ = false;
 };
 
