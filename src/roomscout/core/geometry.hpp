@@ -28,9 +28,6 @@ inline double wrapAngle(double angle_rad) {
   return angle_rad <= -M_PI ? angle_rad + 2.0 * M_PI : angle_rad;
 }
 
-/// True when `p` lies inside `polygon` (even-odd rule; points on an edge may go either way).
-bool pointInPolygon(const Polygon& polygon, const Vec2& p);
-
 /// Area of a simple polygon [m^2] (absolute value of the shoelace sum).
 double polygonArea(const Polygon& polygon);
 

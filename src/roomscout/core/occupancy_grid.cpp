@@ -42,14 +42,6 @@ OccupancyGrid::OccupancyGrid(const GridGeometry& geometry, const OccupancyGridOp
   free_threshold_ = static_cast<float>(options_.free_threshold);
 }
 
-double OccupancyGrid::probability(std::size_t index) const {
-  return 1.0 - 1.0 / (1.0 + std::exp(static_cast<double>(log_odds_[index])));
-}
-
-void OccupancyGrid::setLogOdds(std::size_t index, float value) {
-  log_odds_[index] = std::min(max_, std::max(min_, value));
-}
-
 void OccupancyGrid::setState(std::size_t index, CellState state) {
   switch (state) {
     case CellState::kUnknown: log_odds_[index] = 0.0f; break;

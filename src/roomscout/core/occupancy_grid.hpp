@@ -51,13 +51,10 @@ class OccupancyGrid {
   bool isOccupied(std::size_t index) const { return state(index) == CellState::kOccupied; }
 
   float logOdds(std::size_t index) const { return log_odds_[index]; }
-  /// Occupancy probability in [0, 1].
-  double probability(std::size_t index) const;
 
   /// Raw updates, clamped to the options' range.
   void addHit(std::size_t index) { add(index, hit_); }
   void addMiss(std::size_t index) { add(index, miss_); }
-  void setLogOdds(std::size_t index, float value);
 
   /// Marks every cell with the given state (used to build grids from existing maps).
   void setState(std::size_t index, CellState state);
