@@ -57,7 +57,7 @@ TEST(CostmapTest, SingleObstacleMakesExactlyTheDiscWithinLethalRadiusLethal) {
   }
 }
 
-TEST(CostmapTest, ClearanceMatchesBruteForceDistances) {
+TEST(CostmapTest, ClearanceMatchesBruteForceDistancesUpToTheCap) {
   OccupancyGrid grid = makeGrid(60, 45, CellState::kFree);
   std::mt19937 rng(7);
   std::uniform_int_distribution<int> xs(0, 59), ys(0, 44);
@@ -79,17 +79,18 @@ TEST(CostmapTest, ClearanceMatchesBruteForceDistances) {
     const Cell c = grid.geometry().cellAt(i);
     double nearest_m = 1e9;
     for (const Cell& o : obstacles) nearest_m = std::min(nearest_m, cellDistance_m(c, o));
-    EXPECT_NEAR(costmap.clearance_m(i), nearest_m, 1e-3) << "cell " << c.x << "," << c.y;
+    EXPECT_NEAR(costmap.clearance_m(i), std::min(nearest_m, costmap.maxClearance_m()), 1e-3)
+        << "cell " << c.x << "," << c.y;
   }
 }
 
-TEST(CostmapTest, GridWithoutObstaclesHasLargeClearanceAndUnitCost) {
+TEST(CostmapTest, GridWithoutObstaclesHasCappedClearanceAndUnitCost) {
   const OccupancyGrid grid = makeGrid(20, 10, CellState::kFree);
   Costmap costmap;
   costmap.update(grid);
   ASSERT_EQ(costmap.geometry(), grid.geometry());
   for (std::size_t i = 0; i < grid.geometry().cellCount(); ++i) {
-    EXPECT_GE(costmap.clearance_m(i), 1e5);
+    EXPECT_FLOAT_EQ(costmap.clearance_m(i), static_cast<float>(costmap.maxClearance_m()));
     EXPECT_FALSE(costmap.isLethal(i));
     EXPECT_FALSE(costmap.isUnknown(i));
     EXPECT_FLOAT_EQ(costmap.stepCost(i), 1.0f);
@@ -162,6 +163,37 @@ TEST(CostmapTest, UpdateFollowsGridChangesAndSizes) {
 
   costmap.update(OccupancyGrid(GridGeometry({0, 0}, 0.05, 0, 0)));
   EXPECT_EQ(costmap.geometry().cellCount(), 0u);
+}
+
+// Incremental updates (only the window around changed cells) must equal a build from scratch,
+// whatever the sequence of changes: obstacles appearing, disappearing, unknown becoming free.
+TEST(CostmapTest, IncrementalUpdatesEqualABuildFromScratch) {
+  OccupancyGrid grid = makeGrid(120, 90, CellState::kUnknown);
+  std::mt19937 rng(11);
+  std::uniform_int_distribution<int> xs(0, 119), ys(0, 89), sizes(1, 25), kinds(0, 2);
+  Costmap incremental, hinted;  // hinted: told the rectangle of each change
+  incremental.update(grid);
+  hinted.update(grid);
+  for (int step = 0; step < 40; ++step) {
+    // A random rectangle of cells takes a random state, as a laser scan changes a patch.
+    const int x0 = xs(rng), y0 = ys(rng), w = sizes(rng), h = sizes(rng);
+    const CellState s = static_cast<CellState>(kinds(rng));
+    for (int y = y0; y < std::min(90, y0 + h); ++y) {
+      for (int x = x0; x < std::min(120, x0 + w); ++x) grid.setState(grid.geometry().index(Cell{x, y}), s);
+    }
+    incremental.update(grid);
+    hinted.update(grid, CellRect{x0, y0, x0 + w, y0 + h});
+    Costmap fresh;
+    fresh.update(grid);
+    for (std::size_t i = 0; i < grid.geometry().cellCount(); ++i) {
+      ASSERT_EQ(incremental.isLethal(i), fresh.isLethal(i)) << "step " << step << " cell " << i;
+      ASSERT_EQ(incremental.isUnknown(i), fresh.isUnknown(i)) << "step " << step << " cell " << i;
+      ASSERT_FLOAT_EQ(incremental.clearance_m(i), fresh.clearance_m(i)) << "step " << step << " cell " << i;
+      ASSERT_FLOAT_EQ(incremental.stepCost(i), fresh.stepCost(i)) << "step " << step << " cell " << i;
+      ASSERT_EQ(hinted.isLethal(i), fresh.isLethal(i)) << "step " << step << " cell " << i;
+      ASSERT_FLOAT_EQ(hinted.stepCost(i), fresh.stepCost(i)) << "step " << step << " cell " << i;
+    }
+  }
 }
 
 TEST(CostmapTest, OptionsAreValidated) {

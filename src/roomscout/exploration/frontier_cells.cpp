@@ -6,81 +6,86 @@
 
 namespace roomscout {
 
-std::vector<Cell> reachableFrontierCells(const OccupancyGrid& grid, const Costmap& costmap,
-                                         int obstacle_l1_cells,
-                                         const std::vector<std::uint8_t>* exhausted,
-                                         const Vec2* robot_m) {
+namespace {
+
+constexpr int kDx[4] = {1, 0, -1, 0};
+constexpr int kDy[4] = {0, 1, 0, -1};
+
+/// SMMR-Explore's frontier cell test, without the robot-region condition (see the header).
+class FrontierCellTest {
+ public:
+  FrontierCellTest(const OccupancyGrid& grid, const Costmap& costmap, int obstacle_l1_cells,
+                   const std::vector<std::uint8_t>* exhausted)
+      : grid_(grid), costmap_(costmap), exhausted_(exhausted), w_(grid.geometry().width()),
+        h_(grid.geometry().height()), r_(obstacle_l1_cells - 1) {}
+
+  bool operator()(int x, int y) const {
+    if (x < 2 || y < 2 || x >= w_ - 2 || y >= h_ - 2) return false;
+    const std::size_t i = static_cast<std::size_t>(y) * w_ + x;
+    if (!grid_.isUnknown(i)) return false;
+    if (exhausted_ != nullptr && i < exhausted_->size() && (*exhausted_)[i] != 0) return false;
+    bool reachable = false;
+    for (int k = 0; k < 4 && !reachable; ++k) {
+      const int nx = x + kDx[k], ny = y + kDy[k];
+      if (!free(nx, ny)) continue;
+      // The free neighbour needs a further free neighbour: ahead, left or right of it.
+      reachable = free(nx + kDx[k], ny + kDy[k]) || free(nx + kDy[k], ny + kDx[k]) ||
+                  free(nx - kDy[k], ny - kDx[k]);
+    }
+    if (!reachable || costmap_.isLethal(i)) return false;
+    for (int dy = -r_; dy <= r_; ++dy) {  // occupied cells at L1 <= r_ reject the cell
+      const int yy = y + dy;
+      if (yy < 0 || yy >= h_) continue;
+      const int span = r_ - std::abs(dy);
+      for (int xx = std::max(0, x - span); xx <= std::min(w_ - 1, x + span); ++xx) {
+        if (grid_.isOccupied(static_cast<std::size_t>(yy) * w_ + xx)) return false;
+      }
+    }
+    return true;
+  }
+
+ private:
+  bool free(int x, int y) const { return grid_.isFree(static_cast<std::size_t>(y) * w_ + x); }
+
+  const OccupancyGrid& grid_;
+  const Costmap& costmap_;
+  const std::vector<std::uint8_t>* exhausted_;
+  int w_, h_, r_;
+};
+
+/// The known-free, non-lethal cell robotFreeRegion starts from, if any.
+std::optional<Cell> regionStart(const OccupancyGrid& grid, const Costmap& costmap, const Vec2& from_m) {
   const GridGeometry& g = grid.geometry();
-  const int w = g.width(), h = g.height();
-  std::vector<Cell> out;
-  if (w < 5 || h < 5) return out;
-  auto free = [&](int x, int y) { return grid.isFree(static_cast<std::size_t>(y) * w + x); };
-  static constexpr int kDx[4] = {1, 0, -1, 0};
-  static constexpr int kDy[4] = {0, 1, 0, -1};
-  const int r = obstacle_l1_cells - 1;  // occupied cells at L1 <= r reject a cell
-  std::vector<std::uint8_t> region;
-  if (robot_m != nullptr) region = robotFreeRegion(grid, costmap, *robot_m);
-  for (int y = 2; y < h - 2; ++y) {
-    for (int x = 2; x < w - 2; ++x) {
-      const std::size_t i = static_cast<std::size_t>(y) * w + x;
-      if (!grid.isUnknown(i)) continue;
-      if (exhausted != nullptr && i < exhausted->size() && (*exhausted)[i] != 0) continue;
-      bool reachable = false;
-      for (int k = 0; k < 4 && !reachable; ++k) {
-        const int nx = x + kDx[k], ny = y + kDy[k];
-        if (!free(nx, ny)) continue;
-        // The free neighbour needs a further free neighbour: ahead, left or right of it.
-        reachable = free(nx + kDx[k], ny + kDy[k]) || free(nx + kDy[k], ny + kDx[k]) ||
-                    free(nx - kDy[k], ny - kDx[k]);
+  auto open = [&](std::size_t i) { return grid.isFree(i) && !costmap.isLethal(i); };
+  const Cell c = g.cellOf(from_m);
+  if (g.contains(c) && open(g.index(c))) return c;
+  std::optional<Cell> start;
+  const int r = static_cast<int>(std::ceil(1.0 / g.resolution_m()));
+  long best = std::numeric_limits<long>::max();
+  for (int dy = -r; dy <= r; ++dy) {
+    for (int dx = -r; dx <= r; ++dx) {
+      const Cell q{c.x + dx, c.y + dy};
+      const long d2 = static_cast<long>(dx) * dx + static_cast<long>(dy) * dy;
+      if (d2 < best && g.contains(q) && open(g.index(q))) {
+        best = d2;
+        start = q;
       }
-      if (!reachable || costmap.isLethal(i)) continue;
-      if (robot_m != nullptr && !region[i - 1] && !region[i + 1] && !region[i - w] && !region[i + w]) continue;
-      bool near_obstacle = false;
-      for (int dy = -r; dy <= r && !near_obstacle; ++dy) {
-        const int yy = y + dy;
-        if (yy < 0 || yy >= h) continue;
-        const int span = r - std::abs(dy);
-        for (int dx = -span; dx <= span; ++dx) {
-          const int xx = x + dx;
-          if (xx < 0 || xx >= w) continue;
-          if (grid.isOccupied(static_cast<std::size_t>(yy) * w + xx)) {
-            near_obstacle = true;
-            break;
-          }
-        }
-      }
-      if (!near_obstacle) out.push_back({x, y});
     }
   }
-  return out;
+  return start;
 }
 
-std::vector<std::uint8_t> robotFreeRegion(const OccupancyGrid& grid, const Costmap& costmap, const Vec2& from_m) {
+/// Depth-first flood fill of the open cells 4-connected to `start`; calls `visit(index)` for
+/// each cell as it is reached and stops early when it returns false.
+template <typename Visit>
+void floodOpenRegion(const OccupancyGrid& grid, const Costmap& costmap, Cell start,
+                     std::vector<std::uint8_t>& region, Visit&& visit) {
   const GridGeometry& g = grid.geometry();
-  std::vector<std::uint8_t> region(g.cellCount(), 0);
   auto open = [&](std::size_t i) { return grid.isFree(i) && !costmap.isLethal(i); };
-  std::optional<Cell> start;
-  const Cell c = g.cellOf(from_m);
-  if (g.contains(c) && open(g.index(c))) {
-    start = c;
-  } else {
-    const int r = static_cast<int>(std::ceil(1.0 / g.resolution_m()));
-    long best = std::numeric_limits<long>::max();
-    for (int dy = -r; dy <= r; ++dy) {
-      for (int dx = -r; dx <= r; ++dx) {
-        const Cell q{c.x + dx, c.y + dy};
-        const long d2 = static_cast<long>(dx) * dx + static_cast<long>(dy) * dy;
-        if (d2 < best && g.contains(q) && open(g.index(q))) {
-          best = d2;
-          start = q;
-        }
-      }
-    }
-  }
-  if (!start) return region;
-  std::vector<std::size_t> stack{g.index(*start)};
-  region[stack.back()] = 1;
   const int w = g.width();
+  std::vector<std::size_t> stack{g.index(start)};
+  region[stack.back()] = 1;
+  if (!visit(stack.back())) return;
   while (!stack.empty()) {
     const std::size_t i = stack.back();
     stack.pop_back();
@@ -91,8 +96,64 @@ std::vector<std::uint8_t> robotFreeRegion(const OccupancyGrid& grid, const Costm
       if (ok[k] && !region[n[k]] && open(n[k])) {
         region[n[k]] = 1;
         stack.push_back(n[k]);
+        if (!visit(n[k])) return;
       }
     }
+  }
+}
+
+}  // namespace
+
+std::vector<Cell> reachableFrontierCells(const OccupancyGrid& grid, const Costmap& costmap,
+                                         int obstacle_l1_cells,
+                                         const std::vector<std::uint8_t>* exhausted,
+                                         const Vec2* robot_m) {
+  const GridGeometry& g = grid.geometry();
+  const int w = g.width(), h = g.height();
+  std::vector<Cell> out;
+  if (w < 5 || h < 5) return out;
+  const FrontierCellTest isFrontier(grid, costmap, obstacle_l1_cells, exhausted);
+  std::vector<std::uint8_t> region;
+  if (robot_m != nullptr) region = robotFreeRegion(grid, costmap, *robot_m);
+  for (int y = 2; y < h - 2; ++y) {
+    for (int x = 2; x < w - 2; ++x) {
+      const std::size_t i = static_cast<std::size_t>(y) * w + x;
+      if (robot_m != nullptr && !region[i - 1] && !region[i + 1] && !region[i - w] && !region[i + w]) continue;
+      if (isFrontier(x, y)) out.push_back({x, y});
+    }
+  }
+  return out;
+}
+
+std::size_t countReachableFrontierCells(const OccupancyGrid& grid, const Costmap& costmap,
+                                        int obstacle_l1_cells,
+                                        const std::vector<std::uint8_t>* exhausted,
+                                        const Vec2& robot_m, std::size_t limit) {
+  const GridGeometry& g = grid.geometry();
+  if (g.width() < 5 || g.height() < 5 || limit == 0) return 0;
+  const std::optional<Cell> start = regionStart(grid, costmap, robot_m);
+  if (!start) return 0;
+  const FrontierCellTest isFrontier(grid, costmap, obstacle_l1_cells, exhausted);
+  std::vector<std::uint8_t> region(g.cellCount(), 0);
+  std::vector<std::size_t> found;  // at most `limit` cells
+  floodOpenRegion(grid, costmap, *start, region, [&](std::size_t i) {
+    const Cell q = g.cellAt(i);
+    for (int k = 0; k < 4; ++k) {
+      const int x = q.x + kDx[k], y = q.y + kDy[k];
+      if (!isFrontier(x, y)) continue;
+      const std::size_t j = static_cast<std::size_t>(y) * g.width() + x;
+      if (std::find(found.begin(), found.end(), j) == found.end()) found.push_back(j);
+      if (found.size() >= limit) return false;
+    }
+    return true;
+  });
+  return found.size();
+}
+
+std::vector<std::uint8_t> robotFreeRegion(const OccupancyGrid& grid, const Costmap& costmap, const Vec2& from_m) {
+  std::vector<std::uint8_t> region(grid.geometry().cellCount(), 0);
+  if (const std::optional<Cell> start = regionStart(grid, costmap, from_m)) {
+    floodOpenRegion(grid, costmap, *start, region, [](std::size_t) { return true; });
   }
   return region;
 }

@@ -27,6 +27,14 @@ std::vector<Cell> reachableFrontierCells(const OccupancyGrid& grid, const Costma
                                          const std::vector<std::uint8_t>* exhausted = nullptr,
                                          const Vec2* robot_m = nullptr);
 
+/// The number of cells reachableFrontierCells(grid, costmap, obstacle_l1_cells, exhausted,
+/// &robot_m) would return, counted only up to `limit`: the flood fill from the robot stops as
+/// soon as `limit` such cells border it, so the end tests cost little while frontiers are near.
+std::size_t countReachableFrontierCells(const OccupancyGrid& grid, const Costmap& costmap,
+                                        int obstacle_l1_cells,
+                                        const std::vector<std::uint8_t>* exhausted,
+                                        const Vec2& robot_m, std::size_t limit);
+
 /// The known-free, non-lethal cells 4-connected to the cell of `from_m` (or, when that cell is
 /// not such a cell, to the nearest one within 1 m), as a one-byte-per-cell mask.
 std::vector<std::uint8_t> robotFreeRegion(const OccupancyGrid& grid, const Costmap& costmap, const Vec2& from_m);

@@ -169,7 +169,8 @@ ImprovedRrt::Step ImprovedRrt::iterate(const ExplorationInput& input, const RrtT
     const Vec2 robot_m = input.robot.position();
     iterations_since_end_check_ = 0;
     const std::size_t cells =
-        reachableFrontierCells(input.grid, input.costmap, options_.end_obstacle_l1_cells, &visited_, &robot_m).size();
+        countReachableFrontierCells(input.grid, input.costmap, options_.end_obstacle_l1_cells, &visited_,
+                                    robot_m, static_cast<std::size_t>(options_.end_min_frontier_cells));
     if (cells < static_cast<std::size_t>(options_.end_min_frontier_cells)) {
       if (++failed_end_checks_ >= options_.end_checks) return Step::kDone;
       return Step::kContinue;

@@ -26,6 +26,7 @@ void RrtExplorationOptions::validate() const {
   if (end_checks < 1 || end_min_frontier_cells < 1) throw OptionError("rrt: end_checks and end_min_frontier_cells must be >= 1");
   if (!(observed_radius_m >= 0.0)) throw OptionError("rrt.observed_radius_m must be >= 0");
   if (max_samples_per_call < 1) throw OptionError("rrt.max_samples_per_call must be >= 1");
+  if (!positive(idle_end_s)) throw OptionError("rrt.idle_end_s must be > 0");
 }
 
 std::vector<ParameterRef> RrtExplorationOptions::parameters() {
@@ -46,6 +47,7 @@ std::vector<ParameterRef> RrtExplorationOptions::parameters() {
       {"end_min_frontier_cells", &end_min_frontier_cells, "fewer reachable frontier cells fail the end test"},
       {"observed_radius_m", &observed_radius_m, "end test: frontier cells still unknown this close to the robot are ignored [m]"},
       {"max_samples_per_call", &max_samples_per_call, "cap on samples grown in one call, per tree"},
+      {"idle_end_s", &idle_end_s, "exploration ends after this long with no assignable centroid [s]"},
   };
 }
 
@@ -55,18 +57,29 @@ namespace {
 /// `radius_m` of `p`.
 double unknownAreaInDisc(const OccupancyGrid& grid, const Vec2& p, double radius_m) {
   const GridGeometry& g = grid.geometry();
+  const double res = g.resolution_m();
   const Cell c = g.cellOf(p);
-  const int r = static_cast<int>(std::ceil(radius_m / g.resolution_m()));
+  const int r = static_cast<int>(std::ceil(radius_m / res));
   const double r2 = radius_m * radius_m;
   int count = 0;
   for (int y = std::max(0, c.y - r); y <= std::min(g.height() - 1, c.y + r); ++y) {
-    for (int x = std::max(0, c.x - r); x <= std::min(g.width() - 1, c.x + r); ++x) {
-      const Cell q{x, y};
-      if ((g.centerOf(q) - p).squaredNorm() > r2) continue;
-      if (grid.isUnknown(g.index(q))) ++count;
+    const double dy = g.origin_m().y() + (y + 0.5) * res - p.y();
+    if (dy * dy > r2) continue;
+    // The row's cells whose centres lie in the disc, give or take one cell at each end, where
+    // the exact test decides.
+    const double half = std::sqrt(r2 - dy * dy);
+    const int x0 = std::max(0, static_cast<int>(std::floor((p.x() - half - g.origin_m().x()) / res - 0.5)));
+    const int x1 = std::min(g.width() - 1, static_cast<int>(std::ceil((p.x() + half - g.origin_m().x()) / res - 0.5)));
+    const std::size_t row = static_cast<std::size_t>(y) * g.width();
+    for (int x = x0; x <= x1; ++x) {
+      if (!grid.isUnknown(row + x)) continue;
+      if (x <= x0 + 1 || x >= x1 - 1) {
+        if ((g.centerOf(Cell{x, y}) - p).squaredNorm() > r2) continue;
+      }
+      ++count;
     }
   }
-  return count * g.resolution_m() * g.resolution_m();
+  return count * res * res;
 }
 
 /// Mean-shift with a flat kernel, as sklearn's MeanShift(bandwidth) without bin seeding: every
@@ -193,8 +206,8 @@ Decision RrtExploration::decide(const ExplorationInput& input) {
   const Vec2 robot_m = input.robot.position();
   if (input.time_s - last_end_check_s_ >= options_.end_check_period_s - 1e-9) {
     last_end_check_s_ = input.time_s;
-    const auto fc = reachableFrontierCells(input.grid, input.costmap, 4, &visited_, &robot_m);
-    const std::size_t cells = fc.size();
+    const std::size_t cells = countReachableFrontierCells(
+        input.grid, input.costmap, 4, &visited_, robot_m, static_cast<std::size_t>(options_.end_min_frontier_cells));
     if (cells < static_cast<std::size_t>(options_.end_min_frontier_cells)) {
       if (++failed_end_checks_ >= options_.end_checks) return Decision::done();
     } else {
@@ -219,12 +232,15 @@ Decision RrtExploration::decide(const ExplorationInput& input) {
   }
   const GridGeometry& g = input.grid.geometry();
   if (best != nullptr) {
+    idle_since_s_ = -1.0;
     has_goal_ = true;
     goal_m_ = *best;
     return Decision::goal(goal_m_);
   }
   if (has_goal_ && !input.costmap.isLethal(g.cellOf(goal_m_))) return Decision::goal(goal_m_);
   if (has_goal_) onGoalFailed(goal_m_);  // a goal that became lethal is given up
+  if (idle_since_s_ < 0.0) idle_since_s_ = input.time_s;
+  if (input.time_s - idle_since_s_ >= options_.idle_end_s) return Decision::done();
   // Nothing to assign yet: wait where we are while the trees grow.
   if (const auto wait = nearestGoalCell(input.grid, input.costmap, robot, 3.0)) return Decision::goal(*wait);
   return Decision::done();

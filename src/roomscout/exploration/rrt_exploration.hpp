@@ -23,7 +23,9 @@
 // - the original never stops; we add SMMR-Explore's end test (see ImprovedRrt): once per
 //   simulated second, count the reachable frontier cells; fewer than 2 in 5 consecutive
 //   checks ends the exploration; cells that stayed unknown while the robot was within
-//   observed_radius_m of them are ignored (see markDisc);
+//   observed_radius_m of them are ignored (see markDisc); and, because a couple of wall-face
+//   cells no beam ever marks can keep that count at 2 forever, exploration also ends when
+//   the filter has offered no assignable centroid for idle_end_s while the trees kept growing;
 // - the filter drops a centroid when its costmap cell is lethal (the original: cost above a
 //   threshold of 70 on ROS's 0-100 costmap scale; our costmap has no such scale);
 // - goals that were reached or whose path failed are blacklisted (no centroid within
@@ -63,6 +65,7 @@ struct RrtExplorationOptions {
   double observed_radius_m = 0.75;     ///< end test ignores frontier cells that stayed unknown
                                        ///< with the robot this close (see markDisc) [m]
   int max_samples_per_call = 20000;    ///< cap on owed samples grown in one call (per tree)
+  double idle_end_s = 30.0;            ///< no assignable centroid for this long ends exploration [s]
 
   void validate() const;
   std::vector<ParameterRef> parameters();
@@ -102,6 +105,7 @@ class RrtExploration final : public ExplorationStrategy {
   std::vector<Vec2> centroids_;  ///< the filter's output, re-clustered each cycle
   std::vector<Vec2> blacklist_;
   std::vector<std::uint8_t> visited_;  ///< cells the robot came within observed_radius_m of
+  double idle_since_s_ = -1.0;   ///< when the robot began waiting with nothing to assign
   bool has_goal_ = false;        ///< a real (not waiting) goal is active
   Vec2 goal_m_ = Vec2::Zero();
 };

@@ -26,13 +26,18 @@ struct CostmapOptions {
 /// Traversal costs of every cell of a grid. Occupied cells and cells closer than
 /// lethalRadius_m() to one are lethal; unknown cells are traversable (optimistic planning,
 /// as move_base with allow_unknown), at a small extra cost.
-/// Built in one pass from the grid (a distance transform); call update() after map changes.
+/// Built from the grid by a distance transform; call update() after map changes. An update
+/// on a grid of the same geometry only recomputes the window around the cells whose state
+/// changed, so refreshing after a few laser scans costs a fraction of the first build.
 class Costmap {
  public:
   explicit Costmap(const CostmapOptions& options = {});
 
-  /// Recomputes every cell from `grid`.
+  /// Brings every cell up to date with `grid` (the same result as a build from scratch).
   void update(const OccupancyGrid& grid);
+  /// The same, when the caller knows that only cells inside `changed` may differ from the
+  /// grid of the last update (e.g. the union of the mapper's changed rectangles).
+  void update(const OccupancyGrid& grid, const CellRect& changed);
 
   const GridGeometry& geometry() const { return geometry_; }
   const CostmapOptions& options() const { return options_; }
@@ -44,8 +49,12 @@ class Costmap {
   bool isUnknown(std::size_t index) const { return unknown_[index] != 0; }
   /// Cost of entering the cell, >= 1 for traversable cells (meaningless when lethal).
   float stepCost(std::size_t index) const { return step_cost_[index]; }
-  /// Distance from the cell centre to the nearest occupied cell centre [m] (large when none).
-  float clearance_m(std::size_t index) const { return clearance_m_[index]; }
+  /// Distance from the cell centre to the nearest occupied cell centre [m], capped at
+  /// maxClearance_m(): farther obstacles change no cost.
+  float clearance_m(std::size_t index) const {
+    return static_cast<float>(clearance_px_[index] * geometry_.resolution_m());
+  }
+  double maxClearance_m() const { return options_.cost_scaling_distance_m; }
 
  private:
   CostmapOptions options_;
@@ -53,7 +62,14 @@ class Costmap {
   std::vector<std::uint8_t> lethal_;
   std::vector<std::uint8_t> unknown_;
   std::vector<float> step_cost_;
-  std::vector<float> clearance_m_;
+  std::vector<float> clearance_px_;  ///< clearance in cells, capped
+  std::vector<CellState> states_;  ///< grid states this costmap was computed from
+
+  void rebuild(const OccupancyGrid& grid);
+  /// Recomputes clearance within `rect` from the obstacles of the current states_.
+  void computeClearance(const CellRect& rect);
+  /// Recomputes lethal_ and step_cost_ within `rect` from clearance_px_ and states_.
+  void computeCosts(const CellRect& rect);
 };
 
 }  // namespace roomscout

@@ -188,6 +188,7 @@ EpisodeResult runEpisode(const WorldModel& world, EpisodeConfig config, Explorat
   double t = 0.0;
   double next_scan_s = 0.0, next_metrics_s = 0.0, next_decision_s = 0.0;
   bool map_changed_since_costmap = true;
+  CellRect changed_since_costmap = grid.geometry().bounds();
   bool need_decision = true;
   bool finished = false;
   std::optional<Vec2> goal;
@@ -226,9 +227,10 @@ EpisodeResult runEpisode(const WorldModel& world, EpisodeConfig config, Explorat
   auto refreshCostmap = [&]() {
     if (!map_changed_since_costmap) return;
     const auto start = Clock::now();
-    costmap.update(grid);
+    costmap.update(grid, changed_since_costmap);
     costmap_ms.push_back(msSince(start));
     map_changed_since_costmap = false;
+    changed_since_costmap = CellRect{};
   };
   auto sampleMetrics = [&]() {
     rate_counter.update(grid, changed_since_sample);
@@ -247,7 +249,9 @@ EpisodeResult runEpisode(const WorldModel& world, EpisodeConfig config, Explorat
     if (t >= next_scan_s - 1e-9) {
       const LaserScan scan = laser.scan(robot.pose());
       const auto start = Clock::now();
-      changed_since_sample.unite(mapper.integrate(scan, robot.pose()));
+      const CellRect changed = mapper.integrate(scan, robot.pose());
+      changed_since_sample.unite(changed);
+      changed_since_costmap.unite(changed);
       occupancy_ms.push_back(msSince(start));
       next_scan_s += scan_period_s;
       map_changed_since_costmap = true;
