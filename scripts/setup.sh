@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs every Debian package roomscout needs (idempotent), then builds Release.
 # Usage: scripts/setup.sh [build-dir]     (default: build)
+# ROOMSCOUT_BROWSER_TESTS=1 also installs Chromium for the tests labelled "browser".
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -10,6 +11,11 @@ packages=(
   libyaml-cpp-dev nlohmann-json3-dev libcli11-dev libtbb-dev
   libgtest-dev libgmock-dev libbenchmark-dev
 )
+# The browser tests open report pages in headless Chromium: a large package (about 120 MB
+# to download, 410 MB installed), so only when asked for.
+if [ "${ROOMSCOUT_BROWSER_TESTS:-0}" = 1 ]; then
+  packages+=(chromium fonts-dejavu-core)
+fi
 
 missing=()
 for p in "${packages[@]}"; do

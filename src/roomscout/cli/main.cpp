@@ -8,20 +8,17 @@
 #include <optional>
 #include <sstream>
 
+#include "roomscout/cli/bench_commands.hpp"
+#include "roomscout/cli/map_commands.hpp"
 #include "roomscout/core/errors.hpp"
+#include "roomscout/experiment/episode_setup.hpp"
+#include "roomscout/experiment/recorded_episode.hpp"
 #include "roomscout/exploration/strategy_registry.hpp"
 #include "roomscout/io/atomic_file.hpp"
-#include "roomscout/cli/map_commands.hpp"
-#include "roomscout/io/analysis_maps_output.hpp"
 #include "roomscout/io/builtin_worlds.hpp"
-#include "roomscout/io/options_yaml.hpp"
 #include "roomscout/io/pcd_io.hpp"
-#include "roomscout/io/point_cloud_render.hpp"
-#include "roomscout/io/run_outputs.hpp"
 #include "roomscout/io/world_source.hpp"
-#include "roomscout/sim/analysis_maps_observer.hpp"
 #include "roomscout/sim/episode.hpp"
-#include "roomscout/sim/point_cloud_observer.hpp"
 #include "roomscout/sim/world_model.hpp"
 
 namespace roomscout::cli {
@@ -78,8 +75,13 @@ Pose2 parseStart(const std::string& text) {
 int runExplore(const ExploreArgs& args) {
   // Fail before simulating anything when the output cannot be written.
   io::ensureWritableDirectory(args.out);
-  const io::PcdFormat pcd_format = io::parsePcdFormat(args.pcd_format);
-  if (!(args.pcd_precision_m >= 0.0)) throw OptionError("--pcd-precision must be >= 0");
+  experiment::RunSettings settings;
+  settings.pcd_format = io::parsePcdFormat(args.pcd_format);
+  settings.pcd_precision_m = args.pcd_precision_m;
+  settings.config_file = args.config;
+  settings.max_time_s = args.max_time_s;
+  settings.remove_floor = args.remove_floor;
+  settings.validate();
 
   std::optional<std::filesystem::path> labels;
   if (!args.room_labels.empty()) labels = args.room_labels;
@@ -89,75 +91,15 @@ int runExplore(const ExploreArgs& args) {
     world.start_given = true;
   }
 
-  sim::EpisodeConfig config;
-  std::unique_ptr<ExplorationStrategy> strategy = createStrategy(args.method, args.seed);
-  std::vector<ParameterGroup> groups = config.groups();
-  sim::PointCloudObserverOptions cloud_options;
-  for (ParameterGroup& g : cloud_options.groups()) groups.push_back(std::move(g));
-  sim::AnalysisMapsOptions maps_options;
-  groups.push_back({"maps", maps_options.parameters()});
-  groups.push_back({"segmentation", maps_options.segmentation.parameters()});
-  groups.push_back({"topology", maps_options.topology.parameters()});
-  // Every method has a group of its own, so that one config file serves all methods.
-  std::vector<std::unique_ptr<ExplorationStrategy>> others;
-  for (const StrategyEntry& e : strategyRegistry()) {
-    if (e.name == args.method) {
-      groups.push_back({e.name, strategy->parameters()});
-    } else {
-      others.push_back(e.create(args.seed));
-      groups.push_back({e.name, others.back()->parameters()});
-    }
-  }
-  if (!args.config.empty()) io::applyConfigFile(args.config, groups);
-  if (args.max_time_s) config.episode.max_time_s = *args.max_time_s;
-  if (args.remove_floor) cloud_options.remove_floor_ceiling = true;
-  cloud_options.validate();
-  config.resolve();
-  config.validate();
-  strategy->validateOptions();
-
-  const sim::WorldModel model(world, config.world);
-  sim::PointCloudObserver cloud(model, cloud_options, args.seed ^ 0x5851F42D4C957F2Dull);
-  // Rooms first: the first observer with a semantic map feeds the strategy.
-  sim::AnalysisMapsObserver semantic(sim::AnalysisMapKind::kSemantic, maps_options);
-  sim::AnalysisMapsObserver topological(sim::AnalysisMapKind::kTopological, maps_options, &semantic);
-  sim::EpisodeResult result;
+  experiment::EpisodeSetup setup = experiment::makeEpisodeSetup(args.method, args.seed, settings);
+  const sim::WorldModel model(world, setup.config.world);
+  experiment::RecordedEpisode recorded;
   {
     ProgressBar bar(world.name + " " + args.method);
-    result = sim::runEpisode(model, config, *strategy, args.seed,
-                             [&](double t, double max_t, double rate) { bar.update(t, max_t, rate); }, {&semantic, &topological, &cloud});
+    recorded = experiment::runRecordedEpisode(model, setup, settings, args.out,
+                                              [&](double t, double max_t, double rate) { bar.update(t, max_t, rate); });
   }
-
-  io::RunInfo info{world.name, world.source, args.method, args.seed, {}, {}};
-  for (const ParameterGroup& g : config.groups()) info.options[g.name] = io::parametersToJson(g.parameters);
-  info.options[args.method] = io::parametersToJson(strategy->parameters());
-  for (const ParameterGroup& g : cloud_options.groups()) info.options[g.name] = io::parametersToJson(g.parameters);
-  {
-    // The point cloud map, in the frame of occupancy.yaml; written before metrics.json.
-    const std::vector<Eigen::Vector3f> points = cloud.map().points();
-    const std::filesystem::path pcd = std::filesystem::path(args.out) / "pointcloud.pcd";
-    io::writePcdAtomic(pcd, points, pcd_format,
-                       "roomscout point cloud map, map frame of occupancy.yaml; " + cloud.description(),
-                       args.pcd_precision_m);
-    io::writeImageAtomic(std::filesystem::path(args.out) / "pointcloud.png",
-                         io::renderPointCloud(points, cloud.columns().ceiling_m() - 0.1));
-    nlohmann::json& record = info.maps["pointcloud"];
-    record["file"] = "pointcloud.pcd";
-    record["format"] = std::string(io::pcdFormatName(pcd_format));
-    record["precision_m"] = args.pcd_precision_m;
-    record["points"] = points.size();
-    record["file_bytes"] = std::filesystem::file_size(pcd);
-    record["memory_bytes"] = cloud.map().memoryBytes();
-    record["scans"] = cloud.scans();
-    record["keyframes"] = cloud.keyframes();
-    record["built"] = cloud.description();
-  }
-  const nlohmann::json analysis_maps = io::writeAnalysisMaps(args.out, semantic, topological, result.map, model);
-  for (const auto& [name, summary] : analysis_maps.items()) info.maps[name] = summary;
-  info.options["maps"] = io::parametersToJson(maps_options.parameters());
-  info.options["segmentation"] = io::parametersToJson(maps_options.segmentation.parameters());
-  info.options["topology"] = io::parametersToJson(maps_options.topology.parameters());
-  io::writeRunOutputs(args.out, info, result);
+  const sim::EpisodeResult& result = recorded.result;
 
   auto fmt = [](const std::optional<double>& v, const char* unit) {
     if (!v) return std::string("never");
@@ -215,6 +157,8 @@ int main(int argc, char** argv) {
   auto* methods_cmd = app.add_subcommand("methods", "List the exploration methods");
   const cli::Subcommand maps_cmd = cli::addMapsCommand(app);
   const cli::Subcommand segment_eval_cmd = cli::addSegmentEvalCommand(app);
+  const cli::Subcommand bench_cmd = cli::addBenchCommand(app);
+  const cli::Subcommand report_cmd = cli::addReportCommand(app);
 
   try {
     app.parse(argc, argv);
@@ -226,6 +170,8 @@ int main(int argc, char** argv) {
     if (worlds_cmd->parsed()) return cli::runWorlds();
     if (maps_cmd.app->parsed()) return maps_cmd.run();
     if (segment_eval_cmd.app->parsed()) return segment_eval_cmd.run();
+    if (bench_cmd.app->parsed()) return bench_cmd.run();
+    if (report_cmd.app->parsed()) return report_cmd.run();
     if (methods_cmd->parsed()) {
       for (const StrategyEntry& e : strategyRegistry()) std::printf("%-18s %s\n", e.name.c_str(), e.description.c_str());
       return 0;

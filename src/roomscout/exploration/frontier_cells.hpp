@@ -39,6 +39,10 @@ std::size_t countReachableFrontierCells(const OccupancyGrid& grid, const Costmap
 /// not such a cell, to the nearest one within 1 m), as a one-byte-per-cell mask.
 std::vector<std::uint8_t> robotFreeRegion(const OccupancyGrid& grid, const Costmap& costmap, const Vec2& from_m);
 
+/// Bounding box [m] of the known (free or occupied) cells; the point `fallback_m` when nothing
+/// is known. The box RRT detectors sample from.
+void knownCellsBox(const OccupancyGrid& grid, const Vec2& fallback_m, Vec2& min_m, Vec2& max_m);
+
 /// Flags (sets to 1) the cells of `mask` (one byte per cell of `geometry`, resized if needed)
 /// whose centres lie within `radius_m` of `p_m`.
 ///

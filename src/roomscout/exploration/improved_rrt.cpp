@@ -98,39 +98,6 @@ double rectangleGain(const GainTable& table, const GridGeometry& g, const Vec2& 
   return table.sum(c.x - r, c.y - r, c.x + r, c.y + r + 1) * g.resolution_m() * g.resolution_m();
 }
 
-/// Bounding box of the known cells [m]; the robot's cell when nothing is known.
-void knownBox(const OccupancyGrid& grid, const Vec2& robot, Vec2& min_m, Vec2& max_m) {
-  const GridGeometry& g = grid.geometry();
-  int x0 = g.width(), y0 = g.height(), x1 = -1, y1 = -1;
-  for (int y = 0; y < g.height(); ++y) {
-    const std::size_t row = static_cast<std::size_t>(y) * g.width();
-    int first = -1, last = -1;
-    for (int x = 0; x < g.width(); ++x) {
-      if (!grid.isUnknown(row + x)) {
-        first = x;
-        break;
-      }
-    }
-    if (first < 0) continue;
-    for (int x = g.width() - 1; x >= first; --x) {
-      if (!grid.isUnknown(row + x)) {
-        last = x;
-        break;
-      }
-    }
-    x0 = std::min(x0, first);
-    x1 = std::max(x1, last);
-    y0 = std::min(y0, y);
-    y1 = y;
-  }
-  if (x1 < 0) {
-    min_m = max_m = robot;
-    return;
-  }
-  min_m = g.origin_m() + Vec2(x0 * g.resolution_m(), y0 * g.resolution_m());
-  max_m = g.origin_m() + Vec2((x1 + 1) * g.resolution_m(), (y1 + 1) * g.resolution_m());
-}
-
 }  // namespace
 
 ImprovedRrt::ImprovedRrt(std::uint64_t seed, const ImprovedRrtOptions& options)
@@ -260,7 +227,7 @@ Decision ImprovedRrt::decide(const ExplorationInput& input) {
   markDisc(visited_, input.grid.geometry(), robot, options_.observed_radius_m);
   if (n > 0) {
     Vec2 box_min, box_max;
-    knownBox(input.grid, robot, box_min, box_max);
+    knownCellsBox(input.grid, robot, box_min, box_max);
     const RrtTree::Sampler sampler = uniformBoxSampler(box_min, box_max);
     for (long k = 0; k < n; ++k) {
       if (iterate(input, sampler) == Step::kDone) return Decision::done();

@@ -5,6 +5,8 @@
 #include "roomscout/exploration/mmpf.hpp"
 #include "roomscout/exploration/nearest_frontier.hpp"
 #include "roomscout/exploration/rrt_exploration.hpp"
+#include "roomscout/exploration/semantic_explorer.hpp"
+#include "roomscout/exploration/topo_exploration.hpp"
 
 namespace roomscout {
 
@@ -26,6 +28,28 @@ const std::vector<StrategyEntry>& strategyRegistry() {
        "SMMR-Explore's multi-target potential field: frontier clusters, BFS distances, "
        "gradient descent with a river term",
        [](std::uint64_t /*seed*/) { return std::make_unique<Mmpf>(); }},
+      {"topo",
+       "MR-TopoMap's topological exploration: a vertex every 2.5 m, frontier directions of a 12 m "
+       "window, farthest from the centre of the map first, backtracking to the nearest vertex",
+       [](std::uint64_t /*seed*/) { return std::make_unique<TopoExploration>(); }},
+      {"semantic",
+       "the paper's semantic-region-aware RRT exploration: samples drawn from the current room's "
+       "frontier with probability kt/(1+kt), score = w_g*G - w_c*C +/- A (current room or not)",
+       [](std::uint64_t seed) { return std::make_unique<SemanticExplorer>(seed); }},
+      {"semantic_sampling_only",
+       "ablation of semantic: room-biased sampling, plain score (A = 0)",
+       [](std::uint64_t seed) {
+         SemanticExplorerOptions o;
+         o.room_reward = 0.0;
+         return std::make_unique<SemanticExplorer>(seed, o, "semantic_sampling_only");
+       }},
+      {"semantic_score_only",
+       "ablation of semantic: uniform sampling (k = 0), room-aware score",
+       [](std::uint64_t seed) {
+         SemanticExplorerOptions o;
+         o.k = 0.0;
+         return std::make_unique<SemanticExplorer>(seed, o, "semantic_score_only");
+       }},
   };
   return entries;
 }

@@ -1,0 +1,59 @@
+#include "roomscout/experiment/episode_setup.hpp"
+
+#include <vector>
+
+#include "roomscout/core/errors.hpp"
+#include "roomscout/exploration/strategy_registry.hpp"
+#include "roomscout/io/options_yaml.hpp"
+
+namespace roomscout::experiment {
+
+void RunSettings::validate() const {
+  if (!(pcd_precision_m >= 0.0)) throw OptionError("--pcd-precision must be >= 0");
+}
+
+nlohmann::json EpisodeSetup::optionsJson() {
+  nlohmann::json options = nlohmann::json::object();
+  for (const ParameterGroup& g : config.groups())
+    options[g.name] = io::parametersToJson(g.parameters);
+  options[method] = io::parametersToJson(strategy->parameters());
+  for (const ParameterGroup& g : cloud.groups())
+    options[g.name] = io::parametersToJson(g.parameters);
+  options["maps"] = io::parametersToJson(maps.parameters());
+  options["segmentation"] = io::parametersToJson(maps.segmentation.parameters());
+  options["topology"] = io::parametersToJson(maps.topology.parameters());
+  return options;
+}
+
+EpisodeSetup makeEpisodeSetup(std::string_view method, std::uint64_t seed,
+                              const RunSettings& settings) {
+  EpisodeSetup setup;
+  setup.method = std::string(method);
+  setup.seed = seed;
+  setup.strategy = createStrategy(method, seed);
+  std::vector<ParameterGroup> groups = setup.config.groups();
+  for (ParameterGroup& g : setup.cloud.groups()) groups.push_back(std::move(g));
+  groups.push_back({"maps", setup.maps.parameters()});
+  groups.push_back({"segmentation", setup.maps.segmentation.parameters()});
+  groups.push_back({"topology", setup.maps.topology.parameters()});
+  // Every method has a group of its own, so that one config file serves all methods.
+  std::vector<std::unique_ptr<ExplorationStrategy>> others;
+  for (const StrategyEntry& e : strategyRegistry()) {
+    if (e.name == method) {
+      groups.push_back({e.name, setup.strategy->parameters()});
+    } else {
+      others.push_back(e.create(seed));
+      groups.push_back({e.name, others.back()->parameters()});
+    }
+  }
+  if (!settings.config_file.empty()) io::applyConfigFile(settings.config_file, groups);
+  if (settings.max_time_s) setup.config.episode.max_time_s = *settings.max_time_s;
+  if (settings.remove_floor) setup.cloud.remove_floor_ceiling = true;
+  setup.cloud.validate();
+  setup.config.resolve();
+  setup.config.validate();
+  setup.strategy->validateOptions();
+  return setup;
+}
+
+}  // namespace roomscout::experiment

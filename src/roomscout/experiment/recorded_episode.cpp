@@ -1,0 +1,78 @@
+#include "roomscout/experiment/recorded_episode.hpp"
+
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "roomscout/io/analysis_maps_output.hpp"
+#include "roomscout/io/atomic_file.hpp"
+#include "roomscout/io/options_yaml.hpp"
+#include "roomscout/io/pcd_io.hpp"
+#include "roomscout/io/point_cloud_render.hpp"
+#include "roomscout/io/run_outputs.hpp"
+#include "roomscout/sim/analysis_maps_observer.hpp"
+#include "roomscout/sim/point_cloud_observer.hpp"
+
+namespace roomscout::experiment {
+namespace {
+
+/// The files an episode writes (the directory may hold others from earlier runs).
+constexpr const char* kOutputFiles[] = {"occupancy.pgm",  "occupancy.yaml", "pointcloud.pcd",
+                                        "pointcloud.png", "topology.json",  "topology.png",
+                                        "semantic.json",  "semantic.png",   "semantic_labels.png",
+                                        "trajectory.csv", "run.png",        "metrics.json"};
+
+}  // namespace
+
+RecordedEpisode runRecordedEpisode(const sim::WorldModel& model, EpisodeSetup& setup,
+                                   const RunSettings& settings,
+                                   const std::filesystem::path& directory,
+                                   const sim::EpisodeProgress& progress) {
+  io::ensureWritableDirectory(directory);
+  sim::PointCloudObserver cloud(model, setup.cloud, setup.seed ^ 0x5851F42D4C957F2Dull);
+  // Rooms first: the first observer with a semantic map feeds the strategy.
+  sim::AnalysisMapsObserver semantic(sim::AnalysisMapKind::kSemantic, setup.maps);
+  sim::AnalysisMapsObserver topological(sim::AnalysisMapKind::kTopological, setup.maps, &semantic);
+  RecordedEpisode recorded;
+  recorded.result = sim::runEpisode(model, setup.config, *setup.strategy, setup.seed, progress,
+                                    {&semantic, &topological, &cloud});
+  const sim::EpisodeResult& result = recorded.result;
+
+  const sim::World& world = model.world();
+  io::RunInfo info{world.name, world.source, setup.method, setup.seed, setup.optionsJson(), {}};
+  {
+    // The point cloud map, in the frame of occupancy.yaml; written before metrics.json.
+    const std::vector<Eigen::Vector3f> points = cloud.map().points();
+    const std::filesystem::path pcd = directory / "pointcloud.pcd";
+    io::writePcdAtomic(
+        pcd, points, settings.pcd_format,
+        "roomscout point cloud map, map frame of occupancy.yaml; " + cloud.description(),
+        settings.pcd_precision_m);
+    io::writeImageAtomic(directory / "pointcloud.png",
+                         io::renderPointCloud(points, cloud.columns().ceiling_m() - 0.1));
+    nlohmann::json& record = info.maps["pointcloud"];
+    record["file"] = "pointcloud.pcd";
+    record["format"] = std::string(io::pcdFormatName(settings.pcd_format));
+    record["precision_m"] = settings.pcd_precision_m;
+    record["points"] = points.size();
+    record["file_bytes"] = std::filesystem::file_size(pcd);
+    record["memory_bytes"] = cloud.map().memoryBytes();
+    record["scans"] = cloud.scans();
+    record["keyframes"] = cloud.keyframes();
+    record["built"] = cloud.description();
+  }
+  const nlohmann::json analysis_maps =
+      io::writeAnalysisMaps(directory, semantic, topological, result.map, model);
+  for (const auto& [name, summary] : analysis_maps.items()) info.maps[name] = summary;
+  io::writeRunOutputs(directory, info, result);
+  recorded.metrics = io::metricsJson(info, result);
+
+  for (const char* name : kOutputFiles) {
+    std::error_code ec;
+    const std::uintmax_t bytes = std::filesystem::file_size(directory / name, ec);
+    if (!ec) recorded.file_bytes[name] = bytes;
+  }
+  return recorded;
+}
+
+}  // namespace roomscout::experiment

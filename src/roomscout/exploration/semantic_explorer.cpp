@@ -1,0 +1,357 @@
+#include "roomscout/exploration/semantic_explorer.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <queue>
+
+#include "roomscout/core/errors.hpp"
+#include "roomscout/exploration/frontier_cells.hpp"
+#include "roomscout/maps/semantic_map.hpp"
+
+namespace roomscout {
+
+void SemanticExplorerOptions::validate() const {
+  auto finiteAtLeast = [](double v, double lo) { return std::isfinite(v) && v >= lo; };
+  auto positive = [](double v) { return std::isfinite(v) && v > 0.0; };
+  if (!finiteAtLeast(k, 0.0)) throw OptionError("semantic.k must be >= 0");
+  if (!finiteAtLeast(gain_weight, 0.0) || !finiteAtLeast(cost_weight, 0.0)) {
+    throw OptionError("semantic: gain_weight and cost_weight must be >= 0");
+  }
+  if (!finiteAtLeast(room_reward, 0.0)) throw OptionError("semantic.room_reward must be >= 0");
+  if (!positive(gain_half_side_m)) throw OptionError("semantic.gain_half_side_m must be > 0");
+  if (!positive(eta_m)) throw OptionError("semantic.eta_m must be > 0");
+  if (!positive(iterations_per_s)) throw OptionError("semantic.iterations_per_s must be > 0");
+  if (!finiteAtLeast(replan_period_s, 0.0)) throw OptionError("semantic.replan_period_s must be >= 0");
+  if (!finiteAtLeast(switch_margin, 0.0)) throw OptionError("semantic.switch_margin must be >= 0");
+  if (!finiteAtLeast(label_search_m, 0.0)) throw OptionError("semantic.label_search_m must be >= 0");
+  if (!finiteAtLeast(blacklist_radius_m, 0.0)) throw OptionError("semantic.blacklist_radius_m must be >= 0");
+  if (!positive(end_check_period_s)) throw OptionError("semantic.end_check_period_s must be > 0");
+  if (end_checks < 1 || end_min_frontier_cells < 1) {
+    throw OptionError("semantic: end_checks and end_min_frontier_cells must be >= 1");
+  }
+  if (!finiteAtLeast(observed_radius_m, 0.0)) throw OptionError("semantic.observed_radius_m must be >= 0");
+  if (!positive(idle_end_s)) throw OptionError("semantic.idle_end_s must be > 0");
+  if (max_iterations_per_call < 1) throw OptionError("semantic.max_iterations_per_call must be >= 1");
+}
+
+std::vector<ParameterRef> SemanticExplorerOptions::parameters() {
+  return {
+      {"k", &k, "weight of the time spent in the current room in P(P_sem) = kt/(1+kt) [1/s]"},
+      {"gain_weight", &gain_weight, "w_g: weight of G, the (unknown - occupied) area [1/m^2]"},
+      {"cost_weight", &cost_weight, "w_c: weight of C, the distance to the point [1/m]"},
+      {"room_reward", &room_reward, "A: added to points in the current room, subtracted elsewhere"},
+      {"gain_half_side_m", &gain_half_side_m, "half-side of the square G is measured in [m]"},
+      {"geodesic_cost", &geodesic_cost, "C is the path length through the costmap instead of the Euclidean distance"},
+      {"eta_m", &eta_m, "tree steering step [m]"},
+      {"iterations_per_s", &iterations_per_s, "tree iterations per simulated second"},
+      {"replan_period_s", &replan_period_s, "re-evaluation period while driving [s]"},
+      {"switch_margin", &switch_margin, "another point must beat the goal's score by this to replace it"},
+      {"label_search_m", &label_search_m, "unlabelled free cells take the room of a labelled cell this close [m]"},
+      {"blacklist_radius_m", &blacklist_radius_m, "reached or failed goals drop frontier points this close [m]"},
+      {"end_check_period_s", &end_check_period_s, "period of the end test [s]"},
+      {"end_checks", &end_checks, "consecutive failing end tests that end exploration"},
+      {"end_min_frontier_cells", &end_min_frontier_cells, "fewer reachable frontier cells fail the end test"},
+      {"observed_radius_m", &observed_radius_m, "end test: frontier cells still unknown this close to the robot are ignored [m]"},
+      {"idle_end_s", &idle_end_s, "exploration ends after this long with no point to assign [s]"},
+      {"max_iterations_per_call", &max_iterations_per_call, "cap on tree iterations run in one call"},
+  };
+}
+
+double semanticSampleProbability(double k, double t_s) {
+  const double kt = k * std::max(0.0, t_s);
+  return kt / (1.0 + kt);
+}
+
+namespace {
+
+/// A uniform double in [0, 1) from the generator (our own mapping: the standard distributions
+/// differ between standard libraries, and runs must not).
+double unit(std::mt19937_64& rng) { return static_cast<double>(rng() >> 11) * 0x1.0p-53; }
+
+/// (unknown - occupied) area [m^2] in the square of half-side `half_m` centred on `p`'s cell.
+double squareGain(const OccupancyGrid& grid, const Vec2& p, double half_m) {
+  const GridGeometry& g = grid.geometry();
+  const Cell c = g.cellOf(p);
+  const int r = static_cast<int>(std::lround(half_m / g.resolution_m()));
+  int sum = 0;
+  for (int y = std::max(0, c.y - r); y <= std::min(g.height() - 1, c.y + r); ++y) {
+    const std::size_t row = static_cast<std::size_t>(y) * g.width();
+    for (int x = std::max(0, c.x - r); x <= std::min(g.width() - 1, c.x + r); ++x) {
+      const CellState s = grid.state(row + x);
+      sum += s == CellState::kUnknown ? 1 : (s == CellState::kOccupied ? -1 : 0);
+    }
+  }
+  return sum * g.resolution_m() * g.resolution_m();
+}
+
+}  // namespace
+
+SemanticExplorer::SemanticExplorer(std::uint64_t seed, const SemanticExplorerOptions& options, std::string name)
+    : options_(options), name_(std::move(name)), rng_(seed) {}
+
+SemanticExplorer::~SemanticExplorer() = default;
+
+double SemanticExplorer::score(double gain_m2, double cost_m, bool in_current_room) const {
+  const double base = options_.gain_weight * gain_m2 - options_.cost_weight * cost_m;
+  return in_current_room ? base + options_.room_reward : base - options_.room_reward;
+}
+
+bool SemanticExplorer::blacklisted(const Vec2& p) const {
+  const double r2 = options_.blacklist_radius_m * options_.blacklist_radius_m;
+  return std::any_of(blacklist_.begin(), blacklist_.end(), [&](const Vec2& b) { return (b - p).squaredNorm() < r2; });
+}
+
+void SemanticExplorer::onGoalReached(const Vec2& goal_m) { onGoalFailed(goal_m); }
+
+void SemanticExplorer::onGoalFailed(const Vec2& goal_m) {
+  // Reached while still unknown (unobservable from there) or unreachable: not sent again.
+  if (has_goal_ && (goal_m - goal_m_).norm() < 1e-9) blacklist_.push_back(goal_m);
+  has_goal_ = false;
+}
+
+bool SemanticExplorer::stale(const ExplorationInput& input, const Vec2& p) const {
+  const GridGeometry& g = input.grid.geometry();
+  const Cell c = g.cellOf(p);
+  if (!g.contains(c)) return true;
+  const std::size_t i = g.index(c);
+  return !input.grid.isUnknown(i) || input.costmap.isLethal(i);
+}
+
+int SemanticExplorer::roomOf(const ExplorationInput& input, const Vec2& p) const {
+  if (input.semantic == nullptr) return 0;
+  const SemanticMap& map = *input.semantic;
+  const int id = map.roomAt(p);
+  if (id != 0) return id;
+  // A cell seen since the segmentation's last update has no label yet: it belongs to the
+  // nearest labelled cell close by (only known-free cells; unknown space is in no room).
+  const GridGeometry& g = input.grid.geometry();
+  const Cell c = g.cellOf(p);
+  if (!g.contains(c) || !input.grid.isFree(g.index(c))) return 0;
+  const int r = static_cast<int>(std::ceil(options_.label_search_m / g.resolution_m()));
+  int best = 0;
+  long best_d2 = static_cast<long>(r) * r + 1;
+  for (int dy = -r; dy <= r; ++dy) {
+    for (int dx = -r; dx <= r; ++dx) {
+      const long d2 = static_cast<long>(dx) * dx + static_cast<long>(dy) * dy;
+      if (d2 >= best_d2) continue;
+      const Cell q{c.x + dx, c.y + dy};
+      if (!g.contains(q) || !input.grid.isFree(g.index(q))) continue;
+      const int label = map.roomAt(g.centerOf(q));
+      if (label != 0) {
+        best = label;
+        best_d2 = d2;
+      }
+    }
+  }
+  return best;
+}
+
+void SemanticExplorer::updateRoom(const ExplorationInput& input) {
+  const int room = roomOf(input, input.robot.position());
+  // In a doorway or an unlabelled patch the robot stays in the room it was in.
+  if (room != 0 && room != room_) {
+    room_ = room;
+    room_since_s_ = input.time_s;
+  }
+  time_in_room_s_ = room_ != 0 ? input.time_s - room_since_s_ : 0.0;
+}
+
+void SemanticExplorer::collectCandidates(const ExplorationInput& input) {
+  candidates_.clear();
+  if (room_ == 0 || input.semantic == nullptr) return;
+  const SemanticRegion* region = input.semantic->region(room_);
+  if (region == nullptr || region->polygon_m.empty()) return;
+  const GridGeometry& g = input.grid.geometry();
+  Vec2 lo = region->polygon_m.front(), hi = lo;
+  for (const Vec2& v : region->polygon_m) {
+    lo = lo.cwiseMin(v);
+    hi = hi.cwiseMax(v);
+  }
+  const double pad = options_.label_search_m + g.resolution_m();
+  const Cell a = g.cellOf(lo - Vec2(pad, pad));
+  const Cell b = g.cellOf(hi + Vec2(pad, pad));
+  const int w = g.width();
+  for (int y = std::max(1, a.y); y <= std::min(g.height() - 2, b.y); ++y) {
+    for (int x = std::max(1, a.x); x <= std::min(w - 2, b.x); ++x) {
+      const std::size_t i = static_cast<std::size_t>(y) * w + x;
+      if (!input.grid.isFree(i) || input.costmap.isLethal(i)) continue;
+      if (!input.grid.isUnknown(i - 1) && !input.grid.isUnknown(i + 1) && !input.grid.isUnknown(i - w) &&
+          !input.grid.isUnknown(i + w)) {
+        continue;
+      }
+      const Vec2 p = g.centerOf(Cell{x, y});
+      if (roomOf(input, p) == room_) candidates_.push_back(p);
+    }
+  }
+}
+
+void SemanticExplorer::grow(const ExplorationInput& input, long iterations) {
+  const GridGeometry& g = input.grid.geometry();
+  Vec2 box_min, box_max;
+  knownCellsBox(input.grid, input.robot.position(), box_min, box_max);
+  const RrtTree::Sampler uniform = uniformBoxSampler(box_min, box_max);
+  const double p_sem = semanticSampleProbability(options_.k, time_in_room_s_);
+  if (point_cells_.size() != g.cellCount()) point_cells_.assign(g.cellCount(), 0);
+  for (long n = 0; n < iterations; ++n) {
+    Vec2 sample;
+    if (!candidates_.empty() && p_sem > 0.0 && unit(rng_) < p_sem) {
+      // P_sem: a frontier cell of the current room, approached by a full step so that the
+      // edge crosses the frontier into unknown space.
+      const Vec2 target = candidates_[std::min(candidates_.size() - 1,
+                                               static_cast<std::size_t>(unit(rng_) * candidates_.size()))];
+      const Vec2 from = tree_->node(tree_->nearest(target));
+      const Vec2 d = target - from;
+      const double len = d.norm();
+      sample = len > 1e-9 ? Vec2(from + d / len * options_.eta_m) : target;
+      ++semantic_draws_;
+    } else {
+      sample = uniform(rng_);
+      ++random_draws_;
+    }
+    const RrtExtension e = tree_->extend(input.grid, sample);
+    if (e.status != EdgeStatus::kFrontier) continue;
+    const Cell c = g.cellOf(e.new_m);
+    if (!g.contains(c) || point_cells_[g.index(c)] || blacklisted(e.new_m)) continue;
+    const Vec2 from = tree_->node(e.nearest);
+    const Vec2 d = e.new_m - from;
+    const double len = d.norm();
+    const Vec2 anchor = len > g.resolution_m() ? Vec2(e.new_m - d / len * g.resolution_m()) : from;
+    points_.push_back({e.new_m, anchor});
+    point_cells_[g.index(c)] = 1;
+  }
+}
+
+std::vector<double> SemanticExplorer::costs(const ExplorationInput& input) const {
+  const Vec2 robot = input.robot.position();
+  std::vector<double> out(points_.size());
+  if (!options_.geodesic_cost) {
+    for (std::size_t i = 0; i < points_.size(); ++i) out[i] = (points_[i].p - robot).norm();
+    return out;
+  }
+  // Dijkstra from the robot over non-lethal cells (8-connected), until every point is settled.
+  const GridGeometry& g = input.grid.geometry();
+  const int w = g.width(), h = g.height();
+  std::vector<float> dist(g.cellCount(), std::numeric_limits<float>::infinity());
+  std::vector<std::uint8_t> wanted(g.cellCount(), 0);
+  std::size_t remaining = 0;
+  for (const FrontierPoint& f : points_) {
+    const std::size_t i = g.index(g.cellOf(f.p));
+    if (!wanted[i]) ++remaining;
+    wanted[i] = 1;
+  }
+  using Item = std::pair<float, std::size_t>;
+  std::priority_queue<Item, std::vector<Item>, std::greater<>> queue;
+  const Cell start = g.cellOf(robot);
+  if (g.contains(start)) {
+    dist[g.index(start)] = 0.0f;
+    queue.push({0.0f, g.index(start)});
+  }
+  const float res = static_cast<float>(g.resolution_m());
+  const float diag = res * std::sqrt(2.0f);
+  while (!queue.empty() && remaining > 0) {
+    const auto [d, i] = queue.top();
+    queue.pop();
+    if (d > dist[i]) continue;
+    if (wanted[i]) {
+      wanted[i] = 0;
+      --remaining;
+    }
+    const int x = static_cast<int>(i % w), y = static_cast<int>(i / w);
+    for (int dy = -1; dy <= 1; ++dy) {
+      for (int dx = -1; dx <= 1; ++dx) {
+        if ((dx == 0 && dy == 0) || x + dx < 0 || y + dy < 0 || x + dx >= w || y + dy >= h) continue;
+        const std::size_t j = static_cast<std::size_t>(y + dy) * w + (x + dx);
+        if (input.costmap.isLethal(j)) continue;
+        const float nd = d + ((dx != 0 && dy != 0) ? diag : res);
+        if (nd < dist[j]) {
+          dist[j] = nd;
+          queue.push({nd, j});
+        }
+      }
+    }
+  }
+  for (std::size_t i = 0; i < points_.size(); ++i) out[i] = dist[g.index(g.cellOf(points_[i].p))];
+  return out;
+}
+
+bool SemanticExplorer::endTest(const ExplorationInput& input) {
+  if (input.time_s - last_end_check_s_ < options_.end_check_period_s - 1e-9) return false;
+  last_end_check_s_ = input.time_s;
+  const std::size_t cells =
+      countReachableFrontierCells(input.grid, input.costmap, 4, &visited_, input.robot.position(),
+                                  static_cast<std::size_t>(options_.end_min_frontier_cells));
+  if (cells < static_cast<std::size_t>(options_.end_min_frontier_cells)) {
+    return ++failed_end_checks_ >= options_.end_checks;
+  }
+  failed_end_checks_ = 0;
+  return false;
+}
+
+Decision SemanticExplorer::decide(const ExplorationInput& input) {
+  const GridGeometry& g = input.grid.geometry();
+  const Vec2 robot = input.robot.position();
+  if (!tree_) {
+    const Vec2 max_m = g.origin_m() + Vec2(g.width() * g.resolution_m(), g.height() * g.resolution_m());
+    tree_ = std::make_unique<RrtTree>(options_.eta_m, g.origin_m(), max_m, 0.5);
+    tree_->reset(robot);
+    grown_until_s_ = input.time_s;
+  }
+  markDisc(visited_, g, robot, options_.observed_radius_m);
+  updateRoom(input);
+  collectCandidates(input);
+
+  const double owed = (input.time_s - grown_until_s_) * options_.iterations_per_s;
+  long n = static_cast<long>(std::floor(owed + 1e-9));
+  if (n > options_.max_iterations_per_call) {
+    n = options_.max_iterations_per_call;
+    grown_until_s_ = input.time_s;
+  } else if (n > 0) {
+    grown_until_s_ += static_cast<double>(n) / options_.iterations_per_s;
+  }
+  if (n > 0) grow(input, n);
+
+  // Points seen since (no longer unknown) or inside the inflation are dropped.
+  std::erase_if(points_, [&](const FrontierPoint& f) {
+    if (!stale(input, f.p) && !blacklisted(f.p)) return false;
+    point_cells_[g.index(g.cellOf(f.p))] = 0;
+    return true;
+  });
+  if (endTest(input)) return Decision::done();
+
+  // The goal's own point was seen: choose again at once.
+  if (has_goal_ && (stale(input, goal_m_) || blacklisted(goal_m_))) has_goal_ = false;
+  const bool periodic = input.time_s - last_eval_s_ >= options_.replan_period_s - 1e-9;
+  if (!points_.empty() && (!has_goal_ || periodic)) {
+    last_eval_s_ = input.time_s;
+    const std::vector<double> c = costs(input);
+    double best_score = -std::numeric_limits<double>::infinity();
+    double goal_score = -std::numeric_limits<double>::infinity();
+    std::size_t best = points_.size();
+    for (std::size_t i = 0; i < points_.size(); ++i) {
+      if (!std::isfinite(c[i])) continue;  // no path through the costmap
+      const bool inside = room_ != 0 && roomOf(input, points_[i].anchor) == room_;
+      const double s = score(squareGain(input.grid, points_[i].p, options_.gain_half_side_m), c[i], inside);
+      if (s > best_score) {
+        best_score = s;
+        best = i;
+      }
+      if (has_goal_ && (points_[i].p - goal_m_).norm() < 1e-9) goal_score = s;
+    }
+    if (best < points_.size() && (!has_goal_ || best_score > goal_score + options_.switch_margin)) {
+      goal_m_ = points_[best].p;
+      has_goal_ = true;
+    }
+  }
+  if (has_goal_) {
+    idle_since_s_ = -1.0;
+    return Decision::goal(goal_m_);
+  }
+  // Nothing to assign: wait where we are while the tree grows.
+  if (idle_since_s_ < 0.0) idle_since_s_ = input.time_s;
+  if (input.time_s - idle_since_s_ >= options_.idle_end_s) return Decision::done();
+  if (const auto wait = nearestGoalCell(input.grid, input.costmap, robot, 3.0)) return Decision::goal(*wait);
+  return Decision::done();
+}
+
+}  // namespace roomscout

@@ -1,0 +1,144 @@
+#pragma once
+// The paper's semantic-region-aware exploration (§III-C): an RRT frontier detector whose
+// samples are drawn from the frontier of the robot's current room more and more often the
+// longer the robot stays in it, and a goal score that rewards frontier points in that room,
+// so the robot finishes the room it is in before it moves on.
+//
+// Frontier point generation (§III-C.1). One tree rooted at the start, as improved_rrt's (step
+// eta_m, iterations_per_s per simulated second). Each iteration draws its sampling point P_sap:
+// - with probability 1 / (1 + k t): P_rad, uniform over the bounding box of the known cells;
+// - with probability k t / (1 + k t): P_sem, drawn uniformly among the room's frontier cells
+//   (known-free, non-lethal cells with an unknown 4-neighbour inside the current room);
+// t is the time since the robot's room last changed. When the room has no frontier cell left,
+// P_rad is used. An extension toward P_sem takes the full step eta_m along its direction, so
+// the edge crosses the frontier instead of stopping on its free side. An edge that reaches
+// unknown space adds its first unknown point P_i to the frontier point set F.
+//
+// Evaluation (§III-C.2). For each P_i in F: G = (unknown - occupied) area in the square of
+// half-side gain_half_side_m around P_i; C = Euclidean distance from the robot (or, with
+// geodesic_cost, the length of the shortest path through the costmap); S = w_g G - w_c C + A
+// when P_i lies in the current room, - A otherwise. P_i itself is unknown, so its room is that
+// of the known-free cell the edge left from (its anchor); an anchor in no room yet counts as
+// outside. Free cells the segmentation has not labelled yet (seen since its last update) take
+// the room of the nearest labelled cell within label_search_m.
+// The best S becomes the goal. It is re-evaluated when the goal is reached or fails, when its
+// point is no longer unknown (seen) or lies in the inflation, and every replan_period_s while
+// driving, when another point beats the goal's own score by switch_margin or the current room
+// gained a frontier point while the goal lies outside it.
+//
+// End: as improved_rrt (fewer than end_min_frontier_cells reachable frontier cells in
+// end_checks consecutive checks, each end_check_period_s; cells the robot came within
+// observed_radius_m of are ignored), or no point to assign for idle_end_s.
+//
+// Without a semantic map (ExplorationInput::semantic null) no point is in a room: sampling is
+// uniform and every point scores -A, i.e. the plain RRT score.
+//
+// Defaults, chosen by the sweep over the three built-in worlds documented in
+// docs/semantic_tuning.md.
+
+#include <cstdint>
+#include <memory>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "roomscout/exploration/exploration_strategy.hpp"
+#include "roomscout/exploration/rrt_tree.hpp"
+
+namespace roomscout {
+
+struct SemanticExplorerOptions {
+  double k = 0.1;                      ///< weight of the time in the room in P(P_sem) [1/s]
+  double gain_weight = 1.0;            ///< w_g [1/m^2]
+  double cost_weight = 1.0;            ///< w_c [1/m]
+  double room_reward = 10.0;           ///< A: added inside the current room, subtracted outside
+  double gain_half_side_m = 1.0;       ///< half-side of G's square [m]
+  bool geodesic_cost = false;          ///< C = path length through the costmap, not Euclidean
+  double eta_m = 1.0;                  ///< tree step [m]
+  double iterations_per_s = 100.0;     ///< tree iterations per simulated second
+  double replan_period_s = 0.5;        ///< re-evaluation period while driving [s]
+  double switch_margin = 1.0;          ///< another point must beat the goal's score by this
+  double label_search_m = 0.5;         ///< unlabelled free cells take a room this close [m]
+  double blacklist_radius_m = 0.3;     ///< reached or failed goals drop points this close [m]
+  double end_check_period_s = 1.0;     ///< period of the end test [s]
+  int end_checks = 5;                  ///< consecutive failing end tests that end exploration
+  int end_min_frontier_cells = 2;      ///< fewer reachable frontier cells fail the end test
+  double observed_radius_m = 0.75;     ///< end test ignores frontier cells that stayed unknown
+                                       ///< with the robot this close [m]
+  double idle_end_s = 30.0;            ///< no point to assign for this long ends exploration [s]
+  int max_iterations_per_call = 20000; ///< cap on owed iterations run in one call
+
+  void validate() const;
+  std::vector<ParameterRef> parameters();
+};
+
+/// P(P_sap = P_sem) = k t / (1 + k t) (paper Eq. 1).
+double semanticSampleProbability(double k, double t_s);
+
+class SemanticExplorer final : public ExplorationStrategy {
+ public:
+  /// @param name the registry name (the ablations share this class with other defaults)
+  SemanticExplorer(std::uint64_t seed, const SemanticExplorerOptions& options = {},
+                   std::string name = "semantic");
+  ~SemanticExplorer() override;
+
+  std::string_view name() const override { return name_; }
+  Decision decide(const ExplorationInput& input) override;
+  void onGoalReached(const Vec2& goal_m) override;
+  void onGoalFailed(const Vec2& goal_m) override;
+  double replanPeriod_s() const override { return options_.replan_period_s; }
+  std::vector<ParameterRef> parameters() override { return options_.parameters(); }
+  void validateOptions() const override { options_.validate(); }
+
+  /// S = w_g G - w_c C + A inside the current room, - A outside (paper §III-C.2).
+  double score(double gain_m2, double cost_m, bool in_current_room) const;
+
+  // Introspection for tests and visualisation.
+  struct FrontierPoint {
+    Vec2 p;       ///< first unknown point of the edge [m]
+    Vec2 anchor;  ///< last known point of the edge before it [m]
+  };
+  const std::vector<FrontierPoint>& frontierPoints() const { return points_; }
+  /// The current room's frontier cells P_sem is drawn from (as of the last decide()).
+  const std::vector<Vec2>& semanticCandidates() const { return candidates_; }
+  int currentRoom() const { return room_; }
+  double timeInRoom_s() const { return time_in_room_s_; }
+  long semanticDraws() const { return semantic_draws_; }
+  long randomDraws() const { return random_draws_; }
+
+ private:
+  struct Scored;
+  void updateRoom(const ExplorationInput& input);
+  void collectCandidates(const ExplorationInput& input);
+  void grow(const ExplorationInput& input, long iterations);
+  int roomOf(const ExplorationInput& input, const Vec2& p) const;
+  bool stale(const ExplorationInput& input, const Vec2& p) const;
+  bool blacklisted(const Vec2& p) const;
+  std::vector<double> costs(const ExplorationInput& input) const;
+  bool endTest(const ExplorationInput& input);
+
+  SemanticExplorerOptions options_;
+  std::string name_;
+  std::mt19937_64 rng_;
+  std::unique_ptr<RrtTree> tree_;
+  double grown_until_s_ = 0.0;
+  double last_end_check_s_ = -1e9;
+  int failed_end_checks_ = 0;
+  double idle_since_s_ = -1.0;
+  double last_eval_s_ = -1e9;
+  int room_ = 0;
+  double room_since_s_ = 0.0;
+  double time_in_room_s_ = 0.0;
+  long semantic_draws_ = 0, random_draws_ = 0;
+  std::vector<FrontierPoint> points_;
+  std::vector<std::uint8_t> point_cells_;  ///< one byte per cell: a point of F lies there
+  std::vector<Vec2> candidates_;
+  std::vector<Vec2> blacklist_;
+  std::vector<std::uint8_t> visited_;
+  std::size_t room_points_seen_ = 0;       ///< points in the current room at the last evaluation
+  bool has_goal_ = false;
+  Vec2 goal_m_ = Vec2::Zero();
+  bool goal_in_room_ = false;
+};
+
+}  // namespace roomscout

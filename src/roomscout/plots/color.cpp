@@ -1,0 +1,28 @@
+#include "roomscout/plots/color.hpp"
+
+#include <array>
+#include <cstdio>
+
+namespace roomscout::plots {
+
+Rgb paletteColor(std::size_t index) {
+  static constexpr std::array<Rgb, 10> kTab10 = {{{31, 119, 180},
+                                                  {255, 127, 14},
+                                                  {44, 160, 44},
+                                                  {214, 39, 40},
+                                                  {148, 103, 189},
+                                                  {140, 86, 75},
+                                                  {227, 119, 194},
+                                                  {127, 127, 127},
+                                                  {188, 189, 34},
+                                                  {23, 190, 207}}};
+  return kTab10[index % kTab10.size()];
+}
+
+std::string toHex(Rgb color) {
+  char text[8];
+  std::snprintf(text, sizeof text, "#%02x%02x%02x", color.r, color.g, color.b);
+  return text;
+}
+
+}  // namespace roomscout::plots

@@ -1,0 +1,240 @@
+// `roomscout bench` and `roomscout report` end to end: resume, shards, --jobs independence,
+// outputs of the lowest seed, and one clear error (exit code 2) for each bad input.
+
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "roomscout/experiment/result_record.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+class BenchCliTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("roomscout_bench_cli_" + std::to_string(std::random_device{}()));
+    fs::create_directories(dir_ / "tiny");
+    writeTwoRoomMap();
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  std::pair<int, std::string> run(const std::string& args) {
+    const fs::path log = dir_ / "log.txt";
+    const int status = std::system(
+        (std::string(ROOMSCOUT_BINARY) + " " + args + " > " + log.string() + " 2>&1").c_str());
+    std::ifstream in(log);
+    std::stringstream s;
+    s << in.rdbuf();
+    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, s.str()};
+  }
+
+  /// A map_server map: a 6 x 4 m room split by a wall with a 1 m door (explored in ~10 s of
+  /// simulated time), as tiny/rooms.yaml.
+  void writeTwoRoomMap() {
+    const int w = 120, h = 80;
+    std::string pixels(static_cast<std::size_t>(w * h), static_cast<char>(254));
+    for (int y = 0; y < h; ++y) {
+      for (int x = 0; x < w; ++x) {
+        const bool wall = y < 2 || y >= h - 2 || x < 2 || x >= w - 2 ||
+                          (x >= 60 && x < 62 && !(y >= 30 && y < 50));
+        if (wall) pixels[static_cast<std::size_t>(y * w + x)] = 0;
+      }
+    }
+    std::ofstream(dir_ / "tiny" / "rooms.pgm", std::ios::binary) << "P5\n"
+                                                                 << w << " " << h << "\n255\n"
+                                                                 << pixels;
+    std::ofstream(dir_ / "tiny" / "rooms.yaml")
+        << "image: rooms.pgm\nresolution: 0.05\norigin: [0.0, 0.0, 0.0]\n"
+           "negate: 0\noccupied_thresh: 0.65\nfree_thresh: 0.196\n";
+  }
+
+  std::string world() const { return (dir_ / "tiny" / "rooms.yaml").string(); }
+
+  static std::vector<nlohmann::json> records(const fs::path& bench_dir) {
+    std::vector<nlohmann::json> out;
+    std::ifstream in(bench_dir / "results.jsonl");
+    std::string line;
+    while (std::getline(in, line)) out.push_back(nlohmann::json::parse(line));
+    return out;
+  }
+
+  static std::string key(const nlohmann::json& r) {
+    return r["world"].get<std::string>() + "/" + r["method"].get<std::string>() + "/" +
+           std::to_string(r["seed"].get<int>());
+  }
+
+  fs::path dir_;
+};
+
+TEST_F(BenchCliTest, RerunSkipsRecordedEpisodesAndResumesAfterATruncatedLine) {
+  const fs::path out = dir_ / "b";
+  auto [code, output] = run("bench --worlds " + world() +
+                            " --methods nearest_frontier --seeds 1 --jobs 1 --out " + out.string());
+  ASSERT_EQ(code, 0) << output;
+  ASSERT_EQ(records(out).size(), 1u);
+  const std::string first_line = records(out)[0].dump();
+
+  // Same bench with one more seed: only the new episode runs.
+  std::tie(code, output) =
+      run("bench --worlds " + world() + " --methods nearest_frontier --seeds 2 --jobs 2 --out " +
+          out.string());
+  ASSERT_EQ(code, 0) << output;
+  EXPECT_NE(output.find("2 episodes (1 run, 1 already recorded)"), std::string::npos) << output;
+  std::vector<nlohmann::json> r = records(out);
+  ASSERT_EQ(r.size(), 2u);
+  EXPECT_EQ(r[0].dump(), first_line);
+  EXPECT_EQ(key(r[1]), "rooms/nearest_frontier/2");
+
+  // An interrupted write left half a line: ignored by report, cut off by the next bench.
+  std::ofstream(out / "results.jsonl", std::ios::app)
+      << R"({"world": "rooms", "method": "nearest_fr)";
+  std::tie(code, output) = run("report " + out.string());
+  ASSERT_EQ(code, 0) << output;
+  std::tie(code, output) = run("bench --worlds " + world() +
+                               " --methods nearest_frontier --seeds 2 --out " + out.string());
+  ASSERT_EQ(code, 0) << output;
+  EXPECT_NE(output.find("2 episodes (0 run, 2 already recorded)"), std::string::npos) << output;
+  EXPECT_NE(output.find("truncated"), std::string::npos) << output;
+  EXPECT_EQ(records(out).size(), 2u);  // every line parses again
+}
+
+TEST_F(BenchCliTest, JobsDoNotChangeResultsAndSeedOneKeepsItsOutputs) {
+  // small_house cut at 30 s of simulated time: a real world, quickly.
+  const fs::path cfg = dir_ / "short.yaml";
+  std::ofstream(cfg) << "episode:\n  max_time_s: 30\n";
+  const std::string args = "bench --worlds small_house," + world() +
+                           " --methods nearest_frontier,rrt --seeds 2 --config " + cfg.string() +
+                           " --out ";
+  auto [code1, out1] = run(args + (dir_ / "j1").string() + " --jobs 1");
+  ASSERT_EQ(code1, 0) << out1;
+  auto [code2, out2] = run(args + (dir_ / "j2").string() + " --jobs 2");
+  ASSERT_EQ(code2, 0) << out2;
+
+  std::map<std::string, nlohmann::json> a, b;
+  for (const nlohmann::json& r : records(dir_ / "j1"))
+    a[key(r)] = roomscout::experiment::withoutTimingFields(r);
+  for (const nlohmann::json& r : records(dir_ / "j2"))
+    b[key(r)] = roomscout::experiment::withoutTimingFields(r);
+  ASSERT_EQ(a.size(), 8u);
+  ASSERT_EQ(b.size(), 8u);
+  for (const auto& [k, r] : a) {
+    ASSERT_TRUE(b.count(k)) << k;
+    EXPECT_EQ(r.dump(), b[k].dump()) << k;
+    EXPECT_EQ(r["options"]["episode"]["max_time_s"], 30.0);
+  }
+  // The lowest seed keeps explore's outputs; the others leave none.
+  const nlohmann::json& sh1 = a.at("small_house/rrt/1");
+  EXPECT_EQ(sh1["outputs"], "runs/small_house/rrt/seed1");
+  for (const char* f : {"metrics.json", "occupancy.pgm", "pointcloud.pcd", "semantic.json",
+                        "topology.json", "run.png"}) {
+    EXPECT_TRUE(fs::exists(dir_ / "j1" / "runs" / "small_house" / "rrt" / "seed1" / f)) << f;
+  }
+  EXPECT_TRUE(a.at("rooms/rrt/2")["outputs"].is_null());
+  EXPECT_FALSE(fs::exists(dir_ / "j1" / "runs" / "rooms" / "rrt" / "seed2"));
+  EXPECT_FALSE(fs::exists(dir_ / "j1" / ".scratch"));
+  // The record's metrics are those of metrics.json.
+  std::ifstream in(dir_ / "j1" / "runs" / "small_house" / "rrt" / "seed1" / "metrics.json");
+  const nlohmann::json metrics = nlohmann::json::parse(in);
+  for (const char* k :
+       {"exploration_rate", "t98_s", "l98_m", "revisits", "curve", "options", "maps"}) {
+    EXPECT_EQ(metrics[k], sh1[k]) << k;
+  }
+  for (const char* k : {"trajectory", "map_stats", "version", "host", "world_group"}) {
+    EXPECT_TRUE(records(dir_ / "j1")[0].contains(k)) << k;
+  }
+  for (const char* f : {"table1.md", "table1.csv", "table2.md", "table3.md"})
+    EXPECT_TRUE(fs::exists(dir_ / "j1" / f)) << f;
+}
+
+TEST_F(BenchCliTest, ShardsPartitionTheEpisodesAndReportMergesThem) {
+  const std::string args =
+      "bench --worlds " + world() + " --methods nearest_frontier,mmpf --seeds 3 --jobs 2 --out ";
+  std::map<std::string, int> seen;
+  for (int i = 1; i <= 2; ++i) {
+    const fs::path out = dir_ / ("shard" + std::to_string(i));
+    auto [code, output] = run(args + out.string() + " --shard " + std::to_string(i) + "/2");
+    ASSERT_EQ(code, 0) << output;
+    for (const nlohmann::json& r : records(out)) ++seen[key(r)];
+  }
+  EXPECT_EQ(seen.size(), 6u);
+  for (const auto& [k, n] : seen) EXPECT_EQ(n, 1) << k;
+
+  // Merging the two shards (and one of them again) counts every episode once.
+  const fs::path merged = dir_ / "merged";
+  auto [code, output] =
+      run("report " + (dir_ / "shard1").string() + " " + (dir_ / "shard2").string() + " " +
+          (dir_ / "shard1").string() + " --out " + merged.string());
+  ASSERT_EQ(code, 0) << output;
+  std::ifstream in(merged / "table1.csv");
+  std::string header, line;
+  std::getline(in, header);
+  int episodes = 0;
+  while (std::getline(in, line)) {
+    std::stringstream s(line);
+    std::string field;
+    for (int i = 0; i < 6; ++i) std::getline(s, field, ',');
+    episodes += std::stoi(field);  // column 6: episodes
+  }
+  EXPECT_EQ(episodes, 6);
+}
+
+TEST_F(BenchCliTest, BadInputsAreNamedWithExitCode2) {
+  const fs::path out = dir_ / "bad";
+  auto expectError = [&](const std::string& args, const std::vector<std::string>& parts) {
+    const auto [code, output] = run(args);
+    EXPECT_EQ(code, 2) << args << "\n" << output;
+    for (const std::string& p : parts)
+      EXPECT_NE(output.find(p), std::string::npos) << args << "\n" << output;
+  };
+  expectError("bench --worlds small_house --methods bogus --out " + out.string(),
+              {"bogus", "nearest_frontier"});
+  expectError("bench --worlds nowhere_house --methods rrt --out " + out.string(),
+              {"nowhere_house", "small_house"});
+  expectError("bench --worlds small_house --methods rrt --shard 3/2 --out " + out.string(),
+              {"--shard", "3/2"});
+  expectError("bench --worlds small_house --methods rrt --seeds 0 --out " + out.string(),
+              {"--seeds"});
+  expectError("bench --worlds small_house --methods rrt --jobs 0 --out " + out.string(),
+              {"--jobs"});
+  EXPECT_FALSE(fs::exists(out / "results.jsonl"));
+
+  // A malformed line that is not the last one.
+  fs::create_directories(out);
+  std::ofstream(out / "results.jsonl")
+      << "{\"world\": \"rooms\", \"method\": \"mmpf\", \"seed\": 1, \"exploration_rate\": 1}\n"
+      << "this is not json\n"
+      << "{\"world\": \"rooms\", \"method\": \"mmpf\", \"seed\": 2, \"exploration_rate\": 1}\n";
+  expectError("bench --worlds " + world() + " --methods mmpf --seeds 1 --out " + out.string(),
+              {"results.jsonl:2"});
+  expectError("report " + out.string(), {"results.jsonl:2", "not a JSON line"});
+  expectError("report " + (dir_ / "empty_dir").string(), {"empty_dir"});
+  fs::create_directories(dir_ / "empty_dir");
+  expectError("report " + (dir_ / "empty_dir").string(), {"no results.jsonl"});
+}
+
+TEST_F(BenchCliTest, ReportOfAHandWrittenFile) {
+  const fs::path data =
+      fs::path(ROOMSCOUT_SOURCE_DIR) / "tests" / "experiment" / "data" / "results_small.jsonl";
+  const auto [code, output] = run("report " + data.string() + " --out " + (dir_ / "rep").string());
+  ASSERT_EQ(code, 0) << output;
+  std::ifstream in(dir_ / "rep" / "table1.md");
+  std::stringstream s;
+  s << in.rdbuf();
+  EXPECT_NE(s.str().find("| RRT | 110.0 ± 10.0 | 171 | 22.0 ± 2.0 | 31 | 3/3 (100 %) |"),
+            std::string::npos)
+      << s.str();
+}
+
+}  // namespace

@@ -1,0 +1,148 @@
+// Report tables from a small hand-written results file (data/results_small.jsonl): the
+// numbers in the tables are the means, sample standard deviations and counts of its records.
+
+#include "roomscout/experiment/report.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <sstream>
+
+#include "roomscout/core/errors.hpp"
+#include "roomscout/experiment/paper_reference.hpp"
+
+namespace roomscout::experiment {
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path kData = fs::path(ROOMSCOUT_SOURCE_DIR) / "tests" / "experiment" / "data";
+
+bool contains(const std::string& text, const std::string& part) {
+  return text.find(part) != std::string::npos;
+}
+
+TEST(Report, Table1HoldsMeansSdAndSuccessRates) {
+  const Report report = buildReport(loadResults({kData / "results_small.jsonl"}));
+  EXPECT_EQ(report.episodes, 9u);
+  ASSERT_EQ(report.rows.size(), 3u);  // paper order, then the group
+  EXPECT_EQ(report.rows[0].name, "small_house");
+  EXPECT_EQ(report.rows[1].name, "medium_house");
+  EXPECT_EQ(report.rows[2].name, "houseexpo");
+  EXPECT_TRUE(report.rows[2].is_group);
+  EXPECT_EQ(report.rows[2].worlds, 3u);
+  EXPECT_EQ(report.methods,
+            (std::vector<std::string>{"rrt", "mmpf", "semantic", "nearest_frontier"}));
+
+  const MethodStats& rrt = report.table1.at({"small_house", "rrt"});
+  EXPECT_EQ(rrt.episodes, 3u);
+  EXPECT_EQ(rrt.successes, 3u);
+  EXPECT_DOUBLE_EQ(rrt.t98_s.mean, 110.0);
+  EXPECT_DOUBLE_EQ(*rrt.t98_s.sd, 10.0);
+  EXPECT_DOUBLE_EQ(rrt.l98_m.mean, 22.0);
+  EXPECT_DOUBLE_EQ(*rrt.l98_m.sd, 2.0);
+  EXPECT_DOUBLE_EQ(rrt.revisits.mean, 2.0);
+  EXPECT_DOUBLE_EQ(*rrt.revisits.sd, 1.0);
+
+  const MethodStats& semantic = report.table1.at({"small_house", "semantic"});
+  EXPECT_EQ(semantic.successes, 1u);  // 0.95 < 98 %
+  EXPECT_EQ(semantic.t98_s.n, 1u);
+  EXPECT_FALSE(semantic.t98_s.sd.has_value());
+
+  const MethodStats& group = report.table1.at({"houseexpo", "nearest_frontier"});
+  EXPECT_EQ(group.episodes, 3u);
+  EXPECT_EQ(group.successes, 2u);
+  EXPECT_DOUBLE_EQ(group.t98_s.mean, 60.0);
+  EXPECT_NEAR(*group.t98_s.sd, std::sqrt(200.0), 1e-12);
+  EXPECT_DOUBLE_EQ(group.l98_m.mean, 12.0);
+
+  const std::string md = table1Markdown(report);
+  EXPECT_TRUE(contains(md, "| RRT | 110.0 ± 10.0 | 171 | 22.0 ± 2.0 | 31 | 3/3 (100 %) |")) << md;
+  EXPECT_TRUE(contains(md, "| Ours (semantic) | 90.0 | 126 | 18.0 | 25 | 1/2 (50 %) |")) << md;
+  EXPECT_TRUE(contains(md, "houseexpo (3 worlds) T98 (s)")) << md;
+  EXPECT_TRUE(contains(md, "60.0 ± 14.1 | 12.0 ± 2.8 | 2/3 (67 %) |")) << md;
+  EXPECT_TRUE(
+      contains(md, "| MMPF | – | 125 | – | 28 | – | 300.0 | 350 | 80.0 | 87 | 1/1 (100 %) |"))
+      << md;
+  // Revisits: small_house, medium_house, houseexpo.
+  EXPECT_TRUE(contains(md, "| RRT | 2.0 ± 1.0 | – | – |")) << md;
+  EXPECT_TRUE(contains(md, "| Ours (semantic) | 2.0 ± 2.8 | – | – |")) << md;
+
+  const std::string csv = table1Csv(report);
+  EXPECT_TRUE(contains(csv, "small_house,0,1,rrt,RRT,3,3,1,3,110,10,3,22,2,3,2,1,171,31\n")) << csv;
+  EXPECT_TRUE(contains(csv,
+                       "houseexpo,1,3,nearest_frontier,Nearest frontier "
+                       "(explore_lite),3,2,0.666667,2,60,14.1421,2,12,2.82843,3,1,1,,\n"))
+      << csv;
+}
+
+TEST(Report, Table3HoldsStorageAndUpdateTimes) {
+  const Report report = buildReport(loadResults({kData / "results_small.jsonl"}));
+  const MapStats& occupancy = report.table3.at({"small_house", "occupancy"});
+  EXPECT_EQ(occupancy.episodes, 2u);
+  EXPECT_DOUBLE_EQ(occupancy.storage_kb.mean, 150.0);
+  EXPECT_NEAR(*occupancy.storage_kb.sd, std::sqrt(5000.0), 1e-12);
+  EXPECT_DOUBLE_EQ(occupancy.update_median_s.mean, 0.002);
+  EXPECT_DOUBLE_EQ(occupancy.update_p95_s.mean, 0.003);
+  const std::string md = table3Markdown(report);
+  EXPECT_TRUE(contains(md, "| 2D occupancy grid | 150.0 ± 70.7 | 509.7 | 0.0020 / 0.0030 | 0.9 |"))
+      << md;
+  EXPECT_TRUE(contains(md, "| 3D point cloud | 3.0 ± 1.4 | 2604.3 | 0.0200 / 0.0300 | 0.2 |"))
+      << md;
+  EXPECT_TRUE(contains(md, "| Semantic | – | 6.1 | – | 2.2 |")) << md;
+}
+
+TEST(Report, Table2ListsThePaperAndOurMethods) {
+  const Report report = buildReport(loadResults({kData / "results_small.jsonl"}));
+  const std::string md = table2Markdown(report);
+  EXPECT_TRUE(contains(md, "| Gomez et al. (ICRA 2020) |  | ✓ | ✓ |  |")) << md;
+  EXPECT_TRUE(contains(md, "| Ours (paper) | ✓ | ✓ | ✓ | ✓ |")) << md;
+  EXPECT_TRUE(contains(md, "| RRT (`rrt`) | ✓ | ✓ |  |  |")) << md;  // the records hold two maps
+  EXPECT_TRUE(contains(md, "| MMPF (`mmpf`) |  |  |  |  |")) << md;
+}
+
+TEST(Report, MergesFilesAndKeepsTheFirstRecordOfAKey) {
+  const ResultSet set = loadResults({kData / "results_small.jsonl", kData / "results_more.jsonl"});
+  EXPECT_EQ(set.duplicates, 1u);
+  EXPECT_EQ(set.episodes.size(), 10u);
+  const MethodStats& rrt = buildReport(set).table1.at({"small_house", "rrt"});
+  EXPECT_EQ(rrt.episodes, 4u);
+  EXPECT_DOUBLE_EQ(rrt.t98_s.mean, 115.0);
+  EXPECT_NEAR(*rrt.t98_s.sd, std::sqrt(500.0 / 3.0), 1e-12);
+}
+
+TEST(Report, PaperNumbersAreTheTablesOfThePaper) {
+  EXPECT_DOUBLE_EQ(paperTable1("small_house", "semantic")->t_s, 126.0);
+  EXPECT_DOUBLE_EQ(paperTable1("small_house", "semantic")->l_m, 25.0);
+  EXPECT_DOUBLE_EQ(paperTable1("large_office", "rrt")->t_s, 1838.0);
+  EXPECT_DOUBLE_EQ(paperTable1("medium_house", "topo")->l_m, 119.0);
+  EXPECT_FALSE(paperTable1("small_house", "nearest_frontier"));
+  EXPECT_DOUBLE_EQ(paperTable3("large_office", "pointcloud")->storage_kb, 16862.5);
+  EXPECT_DOUBLE_EQ(paperTable3("medium_house", "semantic")->update_s, 2.6);
+}
+
+TEST(Report, WritesEveryTable) {
+  const fs::path dir =
+      fs::temp_directory_path() / ("roomscout_report_" + std::to_string(std::random_device{}()));
+  const std::vector<fs::path> files =
+      writeReport(buildReport(loadResults({kData / "results_small.jsonl"})), dir);
+  EXPECT_EQ(files.size(), 4u);
+  for (const char* f : {"table1.md", "table1.csv", "table2.md", "table3.md"})
+    EXPECT_TRUE(fs::exists(dir / f)) << f;
+  fs::remove_all(dir);
+}
+
+TEST(Report, MissingInputIsNamed) {
+  try {
+    loadResults({kData / "nothing_here"});
+    ADD_FAILURE();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("nothing_here"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace roomscout::experiment

@@ -1,0 +1,119 @@
+// results.jsonl: whole lines, a truncated last line ignored and cut off, other bad lines named.
+
+#include "roomscout/experiment/results_file.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <sstream>
+#include <thread>
+
+#include "roomscout/core/errors.hpp"
+
+namespace roomscout::experiment {
+namespace {
+
+namespace fs = std::filesystem;
+
+class ResultsFileTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ =
+        fs::temp_directory_path() / ("roomscout_results_" + std::to_string(std::random_device{}()));
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  fs::path write(const std::string& text) {
+    std::ofstream(dir_ / "results.jsonl", std::ios::binary) << text;
+    return dir_ / "results.jsonl";
+  }
+  std::string read() {
+    std::ifstream in(dir_ / "results.jsonl", std::ios::binary);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+  }
+  fs::path dir_;
+};
+
+const char* kLine1 = R"({"world":"w","method":"m","seed":1,"x":1})";
+const char* kLine2 = R"({"world":"w","method":"m","seed":2,"x":2})";
+
+TEST_F(ResultsFileTest, TruncatedLastLineIsIgnoredThenCutOff) {
+  const fs::path p = write(std::string(kLine1) + "\n" + kLine2 + "\n" + R"({"world":"w","meth)");
+  std::vector<int> seen;
+  const ResultsScan scan = forEachRecord(
+      p, [&](const nlohmann::json& r, const std::string&) { seen.push_back(r["x"]); });
+  EXPECT_EQ(seen, (std::vector<int>{1, 2}));
+  EXPECT_TRUE(scan.truncated_tail);
+  {
+    ResultsFile file(p);
+    EXPECT_TRUE(file.droppedTruncatedLine());
+    EXPECT_EQ(file.recorded().size(), 2u);
+    EXPECT_TRUE(file.recorded().count({"w", "m", 2}));
+    file.append({{"world", "w"}, {"method", "m"}, {"seed", 3}});
+  }
+  EXPECT_EQ(read(), std::string(kLine1) + "\n" + kLine2 + "\n" +
+                        R"({"method":"m","seed":3,"world":"w"})" + "\n");
+}
+
+TEST_F(ResultsFileTest, WholeLastLineWithoutNewlineIsKept) {
+  const fs::path p = write(std::string(kLine1) + "\n" + kLine2);
+  {
+    ResultsFile file(p);
+    EXPECT_FALSE(file.droppedTruncatedLine());
+    EXPECT_EQ(file.recorded().size(), 2u);
+    file.append({{"world", "w"}, {"method", "m"}, {"seed", 3}});
+  }
+  std::size_t n = 0;
+  forEachRecord(p, [&](const nlohmann::json&, const std::string&) { ++n; });
+  EXPECT_EQ(n, 3u);
+}
+
+TEST_F(ResultsFileTest, MalformedLineIsNamedWithItsLineNumber) {
+  const fs::path p = write(std::string(kLine1) + "\n{not json\n" + kLine2 + "\n");
+  try {
+    forEachRecord(p, [](const nlohmann::json&, const std::string&) {});
+    ADD_FAILURE();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("results.jsonl:2"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(ResultsFile{p}, InputError);
+  // A complete last line (with its newline) that is not JSON is malformed too, not truncated.
+  write(std::string(kLine1) + "\n{oops\n");
+  EXPECT_THROW(forEachRecord(p, [](const nlohmann::json&, const std::string&) {}), InputError);
+  // A record without its key.
+  write(R"({"world":"w","seed":1})"
+        "\n");
+  try {
+    forEachRecord(p, [](const nlohmann::json&, const std::string&) {});
+    ADD_FAILURE();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("method"), std::string::npos) << e.what();
+  }
+}
+
+TEST_F(ResultsFileTest, ConcurrentAppendsGiveWholeLines) {
+  {
+    ResultsFile file(dir_ / "results.jsonl");
+    std::vector<std::jthread> threads;
+    for (int t = 0; t < 4; ++t) {
+      threads.emplace_back([&file, t] {
+        for (int i = 0; i < 50; ++i) {
+          file.append({{"world", std::string("w").append(std::to_string(t))},
+                       {"method", "m"},
+                       {"seed", i + 1},
+                       {"pad", std::string(5000, 'x')}});
+        }
+      });
+    }
+  }
+  std::size_t n = 0;
+  forEachRecord(dir_ / "results.jsonl", [&](const nlohmann::json&, const std::string&) { ++n; });
+  EXPECT_EQ(n, 200u);
+}
+
+}  // namespace
+}  // namespace roomscout::experiment
