@@ -10,6 +10,7 @@
 #include <map>
 #include <nlohmann/json.hpp>
 #include <random>
+#include <regex>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -154,7 +155,10 @@ TEST_F(BenchCliTest, JobsDoNotChangeResultsAndSeedOneKeepsItsOutputs) {
   for (const char* k : {"trajectory", "map_stats", "version", "host", "world_group"}) {
     EXPECT_TRUE(records(dir_ / "j1")[0].contains(k)) << k;
   }
-  for (const char* f : {"table1.md", "table1.csv", "table2.md", "table3.md"})
+  for (const char* f :
+       {"table1.md", "table1.csv", "table2.md", "table3.md", "report.html",
+        "figures/fig5_rate_small_house.png", "figures/fig6_trajectories_small_house.svg",
+        "figures/fig7_maps_small_house.png", "figures/fig5_rate_rooms.svg", "figures/revisits.png"})
     EXPECT_TRUE(fs::exists(dir_ / "j1" / f)) << f;
 }
 
@@ -227,14 +231,33 @@ TEST_F(BenchCliTest, BadInputsAreNamedWithExitCode2) {
 TEST_F(BenchCliTest, ReportOfAHandWrittenFile) {
   const fs::path data =
       fs::path(ROOMSCOUT_SOURCE_DIR) / "tests" / "experiment" / "data" / "results_small.jsonl";
-  const auto [code, output] = run("report " + data.string() + " --out " + (dir_ / "rep").string());
+  const auto read = [](const fs::path& p) {
+    std::ifstream in(p);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+  };
+  auto [code, output] = run("report " + data.string() + " --out " + (dir_ / "rep").string());
   ASSERT_EQ(code, 0) << output;
-  std::ifstream in(dir_ / "rep" / "table1.md");
-  std::stringstream s;
-  s << in.rdbuf();
-  EXPECT_NE(s.str().find("| RRT | 110.0 ± 10.0 | 171 | 22.0 ± 2.0 | 31 | 3/3 (100 %) |"),
-            std::string::npos)
-      << s.str();
+  // The built-in worlds get their oracle tour: L98 / oracle beside L98.
+  const std::string md = read(dir_ / "rep" / "table1.md");
+  EXPECT_TRUE(std::regex_search(
+      md,
+      std::regex(
+          R"(\| RRT \| 110\.0 ± 10\.0 \| 171 \| 22\.0 ± 2\.0 \| 31 \| [0-9]+\.[0-9]{2}× \| 3/3 \(100 %\) \|)")))
+      << md;
+  EXPECT_NE(md.find("## Oracle reference"), std::string::npos) << md;
+  for (const char* f : {"report.html", "figures/revisits.png", "figures/revisits.svg"})
+    EXPECT_TRUE(fs::exists(dir_ / "rep" / f)) << f;
+  // The records have no curves and no run outputs: no Fig. 5-7.
+  EXPECT_FALSE(fs::exists(dir_ / "rep" / "figures" / "fig5_rate_small_house.png"));
+
+  std::tie(code, output) =
+      run("report " + data.string() + " --no-oracle --out " + (dir_ / "rep2").string());
+  ASSERT_EQ(code, 0) << output;
+  EXPECT_NE(read(dir_ / "rep2" / "table1.md")
+                .find("| RRT | 110.0 ± 10.0 | 171 | 22.0 ± 2.0 | 31 | 3/3 (100 %) |"),
+            std::string::npos);
 }
 
 }  // namespace

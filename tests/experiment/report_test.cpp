@@ -63,6 +63,9 @@ TEST(Report, Table1HoldsMeansSdAndSuccessRates) {
   EXPECT_TRUE(contains(md, "| RRT | 110.0 ± 10.0 | 171 | 22.0 ± 2.0 | 31 | 3/3 (100 %) |")) << md;
   EXPECT_TRUE(contains(md, "| Ours (semantic) | 90.0 | 126 | 18.0 | 25 | 1/2 (50 %) |")) << md;
   EXPECT_TRUE(contains(md, "houseexpo (3 worlds) T98 (s)")) << md;
+  // No oracle tours attached: no L98 / oracle column, no oracle table.
+  EXPECT_FALSE(contains(md, "L98 / oracle |")) << md;
+  EXPECT_FALSE(contains(md, "## Oracle reference")) << md;
   EXPECT_TRUE(contains(md, "60.0 ± 14.1 | 12.0 ± 2.8 | 2/3 (67 %) |")) << md;
   EXPECT_TRUE(
       contains(md, "| MMPF | – | 125 | – | 28 | – | 300.0 | 350 | 80.0 | 87 | 1/1 (100 %) |"))
@@ -72,10 +75,12 @@ TEST(Report, Table1HoldsMeansSdAndSuccessRates) {
   EXPECT_TRUE(contains(md, "| Ours (semantic) | 2.0 ± 2.8 | – | – |")) << md;
 
   const std::string csv = table1Csv(report);
-  EXPECT_TRUE(contains(csv, "small_house,0,1,rrt,RRT,3,3,1,3,110,10,3,22,2,3,2,1,171,31\n")) << csv;
+  // No oracle tours attached: their columns are empty (see report_figures_test.cpp).
+  EXPECT_TRUE(contains(csv, "small_house,0,1,rrt,RRT,3,3,1,3,110,10,3,22,2,3,2,1,171,31,0,,,0,,\n"))
+      << csv;
   EXPECT_TRUE(contains(csv,
                        "houseexpo,1,3,nearest_frontier,Nearest frontier "
-                       "(explore_lite),3,2,0.666667,2,60,14.1421,2,12,2.82843,3,1,1,,\n"))
+                       "(explore_lite),3,2,0.666667,2,60,14.1421,2,12,2.82843,3,1,1,,,0,,,0,,\n"))
       << csv;
 }
 

@@ -1,7 +1,5 @@
 // Opens a report page in headless Chromium and checks that it renders every table and figure.
-// Label "browser". scripts/test.sh installs Chromium (scripts/setup.sh with
-// ROOMSCOUT_BROWSER_TESTS=1); elsewhere the tests skip when no Chromium is found, unless
-// ROOMSCOUT_BROWSER_TESTS=1 says it must be there. ROOMSCOUT_CHROMIUM overrides the binary.
+// Label "browser"; see browser_support.hpp for how Chromium is found.
 
 #include <gtest/gtest.h>
 
@@ -13,6 +11,7 @@
 
 #include <opencv2/imgcodecs.hpp>
 
+#include "browser_support.hpp"
 #include "plot_test_support.hpp"
 #include "roomscout/io/atomic_file.hpp"
 #include "roomscout/plots/html_report.hpp"
@@ -20,41 +19,15 @@
 namespace roomscout::plots {
 namespace {
 
-std::optional<std::filesystem::path> findChromium() {
-  if (const char* env = std::getenv("ROOMSCOUT_CHROMIUM"); env && *env) {
-    if (std::filesystem::exists(env)) return std::filesystem::path(env);
-    return std::nullopt;
-  }
-  for (const char* candidate : {"/usr/bin/chromium", "/usr/bin/chromium-browser",
-                                "/usr/bin/google-chrome", "/usr/bin/google-chrome-stable"}) {
-    if (std::filesystem::exists(candidate)) return std::filesystem::path(candidate);
-  }
-  return std::nullopt;
-}
-
-bool browserRequired() {
-  const char* env = std::getenv("ROOMSCOUT_BROWSER_TESTS");
-  return env && std::string(env) == "1";
-}
-
-std::string shellQuoted(const std::filesystem::path& p) {
-  std::string out = "'";
-  for (char c : p.string()) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return out + "'";
-}
+using roomscout::test::browserRequired;
+using roomscout::test::findChromium;
+using roomscout::test::shellQuoted;
 
 /// Runs headless Chromium on `page` with `mode_flags`, stdout to `out`; its exit status.
 int runChromium(const std::filesystem::path& chromium, const test::TempDir& dir,
                 const std::string& mode_flags, const std::filesystem::path& page,
                 const std::filesystem::path& out) {
-  const std::filesystem::path profile = dir / "profile";
-  const std::string command =
-      "HOME=" + shellQuoted(dir.path()) + " timeout 120 " + shellQuoted(chromium) +
-      " --headless --no-sandbox --disable-gpu --disable-dev-shm-usage --no-first-run"
-      " --disable-extensions --hide-scrollbars --user-data-dir=" +
-      shellQuoted(profile) + " " + mode_flags + " " + shellQuoted("file://" + page.string()) +
-      " > " + shellQuoted(out) + " 2> " + shellQuoted(dir / "chromium.log");
-  return std::system(command.c_str());
+  return roomscout::test::runChromium(chromium, dir.path(), mode_flags, page, out);
 }
 
 /// Two tables, three SVG figures (one with map images) and one PNG figure.

@@ -12,7 +12,7 @@
 #include "roomscout/core/errors.hpp"
 #include "roomscout/experiment/bench_plan.hpp"
 #include "roomscout/experiment/bench_runner.hpp"
-#include "roomscout/experiment/report.hpp"
+#include "roomscout/experiment/report_writer.hpp"
 #include "roomscout/io/pcd_io.hpp"
 
 namespace roomscout::cli {
@@ -61,23 +61,27 @@ class BenchProgressBar {
   bool drawn_ = false;
 };
 
+/// Runs the report and prints its notes (stderr); returns the files written.
 std::vector<std::filesystem::path> reportInto(const std::vector<std::filesystem::path>& inputs,
-                                              const std::filesystem::path& out) {
-  const experiment::ResultSet results = experiment::loadResults(inputs);
-  if (results.duplicates > 0) {
+                                              const std::filesystem::path& out,
+                                              const experiment::ReportSettings& settings) {
+  const experiment::ReportOutput report = experiment::runReport(inputs, out, settings);
+  if (report.duplicates > 0) {
     std::fprintf(
         stderr,
         "roomscout: note: %zu records repeat an earlier (world, method, seed); kept the first\n",
-        results.duplicates);
+        report.duplicates);
   }
-  if (results.truncated > 0) {
+  if (report.truncated > 0) {
     std::fprintf(
         stderr,
         "roomscout: note: %zu results file(s) end in a truncated line (an interrupted bench), "
         "ignored\n",
-        results.truncated);
+        report.truncated);
   }
-  return experiment::writeReport(experiment::buildReport(results), out);
+  for (const std::string& note : report.notes)
+    std::fprintf(stderr, "roomscout: note: %s\n", note.c_str());
+  return report.files;
 }
 
 struct BenchArgs {
@@ -118,11 +122,15 @@ int runBenchCommand(const BenchArgs& args) {
         "roomscout: note: %s ended in a truncated line (an interrupted bench); removed it\n",
         summary.results.string().c_str());
   }
-  const std::vector<std::filesystem::path> tables = reportInto({options.out}, options.out);
+  experiment::ReportSettings report_settings;
+  report_settings.threads = static_cast<unsigned>(options.jobs);
+  (void)reportInto({options.out}, options.out, report_settings);
   const experiment::BenchProgress& p = summary.progress;
-  std::printf("bench: %zu episodes (%zu run, %zu already recorded) in %.1f s -> %s; tables in %s\n",
-              p.planned, p.done, p.skipped, p.elapsed_s, summary.results.string().c_str(),
-              options.out.string().c_str());
+  std::printf(
+      "bench: %zu episodes (%zu run, %zu already recorded) in %.1f s -> %s; report in %s "
+      "(report.html)\n",
+      p.planned, p.done, p.skipped, p.elapsed_s, summary.results.string().c_str(),
+      options.out.string().c_str());
   return 0;
 }
 
@@ -160,14 +168,18 @@ Subcommand addReportCommand(CLI::App& app) {
   struct ReportArgs {
     std::vector<std::string> inputs;
     std::string out;
+    bool no_oracle = false;
   };
   auto args = std::make_shared<ReportArgs>();
   CLI::App* cmd = app.add_subcommand(
-      "report", "Tables I-III from the results of one or more bench directories");
+      "report",
+      "Tables I-III, figures and report.html from the results of one or more bench directories");
   cmd->add_option("dirs", args->inputs,
                   "bench directories (or results.jsonl files); records merged by key")
       ->required();
-  cmd->add_option("--out", args->out, "where the tables go (default: the first directory)");
+  cmd->add_option("--out", args->out, "where the report goes (default: the first directory)");
+  cmd->add_flag("--no-oracle", args->no_oracle,
+                "skip the full-knowledge oracle tours (Table I's L98 / oracle)");
   return {cmd, [args]() {
             std::vector<std::filesystem::path> inputs(args->inputs.begin(), args->inputs.end());
             std::filesystem::path out = args->out;
@@ -178,7 +190,9 @@ Subcommand addReportCommand(CLI::App& app) {
                         : inputs.front().parent_path();
               if (out.empty()) out = ".";
             }
-            const std::vector<std::filesystem::path> tables = reportInto(inputs, out);
+            experiment::ReportSettings settings;
+            settings.oracle = !args->no_oracle;
+            const std::vector<std::filesystem::path> tables = reportInto(inputs, out, settings);
             for (const std::filesystem::path& t : tables) std::printf("%s\n", t.string().c_str());
             return 0;
           }};

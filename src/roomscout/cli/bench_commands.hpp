@@ -1,5 +1,5 @@
 #pragma once
-// Subcommands over many episodes: `bench` runs them, `report` tabulates their results.
+// Subcommands over many episodes: `bench` runs them, `report` tabulates and plots their results.
 
 #include <CLI/CLI.hpp>
 
@@ -9,11 +9,12 @@ namespace roomscout::cli {
 
 /// `roomscout bench --worlds ... --methods ... --seeds N --jobs J --out DIR [--shard I/N]
 /// [--config FILE] [--max-time S]`: every (world, method, seed) episode into DIR/results.jsonl,
-/// then the report tables into DIR.
+/// then the report (tables, figures, report.html) into DIR.
 Subcommand addBenchCommand(CLI::App& app);
 
-/// `roomscout report DIR... [--out OUT]`: Tables I-III from the results of one or more bench
-/// directories (or results.jsonl files), merged by (world, method, seed).
+/// `roomscout report DIR... [--out OUT] [--no-oracle]`: Tables I-III, figures and report.html
+/// from the results of one or more bench directories (or results.jsonl files), merged by
+/// (world, method, seed).
 Subcommand addReportCommand(CLI::App& app);
 
 }  // namespace roomscout::cli

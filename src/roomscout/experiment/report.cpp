@@ -42,30 +42,107 @@ std::string meanSd(const Stat& s, const char* spec = "%.1f") {
 std::string csvNumber(double v) { return format("%.6g", v); }
 std::string csvNumber(const std::optional<double>& v) { return v ? csvNumber(*v) : ""; }
 
-/// The row an episode belongs to: its world when built in, else its world's group.
-std::pair<std::string, bool> rowOf(const EpisodeSummary& e) {
-  if (e.world_group == "builtin") return {e.key.world, false};
-  return {e.world_group, true};
+/// Paper columns (T, L) for a built-in world of the paper.
+bool paperColumns(const ReportRow& row) { return !row.is_group && worldRank(row.name) < 100; }
+
+std::string percent(std::size_t part, std::size_t whole) {
+  return format("%.0f", 100.0 * static_cast<double>(part) / static_cast<double>(whole));
 }
 
-std::string rowTitle(const ReportRow& row) {
-  if (!row.is_group) return row.name;
-  return row.name + " (" + std::to_string(row.worlds) + (row.worlds == 1 ? " world)" : " worlds)");
-}
+std::string ratioText(const Stat& s) { return s.n ? format("%.2f", s.mean) + "×" : "–"; }
 
-std::string sourcesLine(const Report& report) {
-  std::string text = std::to_string(report.episodes) + " episodes from ";
-  for (std::size_t i = 0; i < report.files.size(); ++i) {
-    text += (i ? ", " : "") + std::string("`") + report.files[i].string() + "`";
-  }
-  return text;
+/// "# title\n\ndescription\n\nsources.\n\n" + the table in markdown.
+std::string markdownSection(const std::string& heading, const std::string& description,
+                            const std::string& sources, const plots::HtmlTable& table) {
+  std::string md = heading + "\n\n" + description + "\n\n";
+  if (!sources.empty()) md += sources + ".\n\n";
+  return md + plots::markdownTable(table);
 }
 
 const char* kMapTitles[4] = {"2D occupancy grid", "3D point cloud", "Topological", "Semantic"};
 
+/// Index of `name` in a record's `<what>_columns` (default columns when absent).
+std::size_t columnIndex(const nlohmann::json& record, const char* columns_key,
+                        const std::vector<std::string>& defaults, const std::string& name,
+                        const std::string& where) {
+  if (!record.contains(columns_key)) {
+    const auto it = std::find(defaults.begin(), defaults.end(), name);
+    return static_cast<std::size_t>(it - defaults.begin());
+  }
+  const nlohmann::json& columns = record[columns_key];
+  if (!columns.is_array())
+    throw InputError(where, std::string("'") + columns_key + "' must be an array");
+  for (std::size_t i = 0; i < columns.size(); ++i) {
+    if (columns[i].is_string() && columns[i].get<std::string>() == name) return i;
+  }
+  throw InputError(where, std::string("'") + columns_key + "' has no column '" + name + "'");
+}
+
+/// Rows of numbers `record[key]` (an array of arrays); calls visit(row) for each.
+template <typename Visit>
+void forEachNumberRow(const nlohmann::json& record, const char* key, std::size_t needed,
+                      const std::string& where, Visit visit) {
+  if (!record.contains(key) || record[key].is_null()) return;
+  const nlohmann::json& rows = record[key];
+  if (!rows.is_array()) throw InputError(where, std::string("'") + key + "' must be an array");
+  for (const nlohmann::json& row : rows) {
+    if (!row.is_array() || row.size() < needed) {
+      throw InputError(where, std::string("'") + key + "' rows must be arrays of " +
+                                  std::to_string(needed) + " or more numbers");
+    }
+    for (const nlohmann::json& v : row) {
+      if (!v.is_number()) throw InputError(where, std::string("'") + key + "' holds a non-number");
+    }
+    visit(row);
+  }
+}
+
+void readCurve(const nlohmann::json& record, const std::string& where, EpisodeSummary& e) {
+  static const std::vector<std::string> kDefault = {"time_s", "length_m", "rate"};
+  if (!record.contains("curve")) return;
+  const std::size_t length = columnIndex(record, "curve_columns", kDefault, "length_m", where);
+  const std::size_t rate = columnIndex(record, "curve_columns", kDefault, "rate", where);
+  forEachNumberRow(record, "curve", std::max(length, rate) + 1, where,
+                   [&](const nlohmann::json& row) {
+                     e.curve.push_back({row[length].get<double>(), row[rate].get<double>()});
+                   });
+}
+
+void readTrajectory(const nlohmann::json& record, const std::string& where, EpisodeSummary& e) {
+  static const std::vector<std::string> kDefault = {"time_s", "x_m", "y_m", "yaw_rad"};
+  if (!record.contains("trajectory")) return;
+  const std::size_t x = columnIndex(record, "trajectory_columns", kDefault, "x_m", where);
+  const std::size_t y = columnIndex(record, "trajectory_columns", kDefault, "y_m", where);
+  forEachNumberRow(record, "trajectory", std::max(x, y) + 1, where, [&](const nlohmann::json& row) {
+    e.trajectory_m.emplace_back(row[x].get<double>(), row[y].get<double>());
+  });
+}
+
+/// world_spec and world_setup (see EpisodeSummary).
+void readWorldAndOptions(const nlohmann::json& record, const std::string& where,
+                         EpisodeSummary& e) {
+  if (record.contains("world_source") && !record["world_source"].is_null()) {
+    if (!record["world_source"].is_string())
+      throw InputError(where, "'world_source' must be a string");
+    const std::string source = record["world_source"].get<std::string>();
+    const std::string builtin = "builtin:";
+    e.world_spec = source.rfind(builtin, 0) == 0 ? source.substr(builtin.size()) : source;
+  } else if (e.world_group == "builtin" && io::isBuiltinWorld(e.key.world)) {
+    e.world_spec = e.key.world;
+  }
+  if (record.contains("options") && record["options"].is_object()) {
+    nlohmann::json setup = nlohmann::json::object();
+    for (const char* group : {"robot", "world", "laser", "mapping", "costmap"}) {
+      if (record["options"].contains(group)) setup[group] = record["options"][group];
+    }
+    e.world_setup = setup.dump();
+  }
+}
+
 }  // namespace
 
-EpisodeSummary summarizeRecord(const nlohmann::json& record, const std::string& where) {
+EpisodeSummary summarizeRecord(const nlohmann::json& record, const std::string& where,
+                               const fs::path& results_dir) {
   EpisodeSummary e;
   e.key = recordKey(record, where);
   e.where = where;
@@ -96,6 +173,14 @@ EpisodeSummary summarizeRecord(const nlohmann::json& record, const std::string& 
       e.maps[type] = m;
     }
   }
+  readWorldAndOptions(record, where, e);
+  readCurve(record, where, e);
+  if (record.contains("outputs") && !record["outputs"].is_null()) {
+    if (!record["outputs"].is_string())
+      throw InputError(where, "'outputs' must be a string or null");
+    e.outputs_dir = results_dir / record["outputs"].get<std::string>();
+    readTrajectory(record, where, e);
+  }
   return e;
 }
 
@@ -114,7 +199,7 @@ ResultSet loadResults(const std::vector<fs::path>& inputs) {
     }
     const ResultsScan scan =
         forEachRecord(file, [&](const nlohmann::json& record, const std::string& where) {
-          EpisodeSummary e = summarizeRecord(record, where);
+          EpisodeSummary e = summarizeRecord(record, where, file.parent_path());
           if (!seen.insert(e.key).second) {
             ++set.duplicates;
             return;
@@ -142,6 +227,23 @@ Stat Stat::of(const std::vector<double>& values) {
   return s;
 }
 
+std::string rowNameOf(const EpisodeSummary& e) {
+  return e.world_group == "builtin" ? e.key.world : e.world_group;
+}
+
+std::string rowTitle(const ReportRow& row) {
+  if (!row.is_group) return row.name;
+  return row.name + " (" + std::to_string(row.worlds) + (row.worlds == 1 ? " world)" : " worlds)");
+}
+
+std::string sourcesLine(const Report& report) {
+  std::string text = std::to_string(report.episodes) + " episodes from ";
+  for (std::size_t i = 0; i < report.files.size(); ++i) {
+    text += (i ? ", " : "") + std::string("`") + report.files[i].string() + "`";
+  }
+  return text;
+}
+
 Report buildReport(const ResultSet& results) {
   Report report;
   report.episodes = results.episodes.size();
@@ -151,7 +253,7 @@ Report buildReport(const ResultSet& results) {
   std::set<std::string> methods;
   struct Samples {
     std::size_t episodes = 0, successes = 0;
-    std::vector<double> t98, l98, revisits;
+    std::vector<double> t98, l98, revisits, ratio;
   };
   std::map<std::pair<std::string, std::string>, Samples> cells;
   struct MapSamples {
@@ -159,10 +261,13 @@ Report buildReport(const ResultSet& results) {
     std::vector<double> storage_kb, median_s, p95_s;
   };
   std::map<std::pair<std::string, std::string>, MapSamples> map_cells;
+  // row -> world -> its oracle (the first episode's)
+  std::map<std::string, std::map<std::string, OracleReference>> oracles;
   const std::vector<std::string>& types = mapTypes();
 
   for (const EpisodeSummary& e : results.episodes) {
-    const auto [row, is_group] = rowOf(e);
+    const std::string row = rowNameOf(e);
+    const bool is_group = e.world_group != "builtin";
     auto& r = rows[row];
     r.first = is_group;
     r.second.insert(e.key.world);
@@ -173,6 +278,10 @@ Report buildReport(const ResultSet& results) {
     if (e.t98_s) c.t98.push_back(*e.t98_s);
     if (e.l98_m) c.l98.push_back(*e.l98_m);
     if (e.revisits) c.revisits.push_back(*e.revisits);
+    if (e.oracle) {
+      oracles[row].emplace(e.key.world, *e.oracle);
+      if (e.l98_m && e.oracle->length_m > 0.0) c.ratio.push_back(*e.l98_m / e.oracle->length_m);
+    }
     auto& built = report.map_types[e.key.method];
     for (std::size_t i = 0; i < types.size(); ++i) {
       const auto it = e.maps.find(types[i]);
@@ -204,6 +313,7 @@ Report buildReport(const ResultSet& results) {
     s.t98_s = Stat::of(c.t98);
     s.l98_m = Stat::of(c.l98);
     s.revisits = Stat::of(c.revisits);
+    s.l98_oracle_ratio = Stat::of(c.ratio);
   }
   for (const auto& [key, c] : map_cells) {
     MapStats& s = report.table3[key];
@@ -212,81 +322,226 @@ Report buildReport(const ResultSet& results) {
     s.update_median_s = Stat::of(c.median_s);
     s.update_p95_s = Stat::of(c.p95_s);
   }
+  for (const auto& [row, worlds] : oracles) {
+    std::vector<double> length, coverage, viewpoints;
+    for (const auto& [world, o] : worlds) {
+      length.push_back(o.length_m);
+      coverage.push_back(o.coverage);
+      viewpoints.push_back(static_cast<double>(o.viewpoints));
+    }
+    OracleRowStats& s = report.oracle[row];
+    s.worlds = worlds.size();
+    s.length_m = Stat::of(length);
+    s.coverage = Stat::of(coverage);
+    s.viewpoints = Stat::of(viewpoints);
+  }
   return report;
 }
 
-std::string table1Markdown(const Report& report) {
-  std::ostringstream md;
-  md << "# Table I: exploration time and trajectory length\n\n"
-     << "T98 [s] and L98 [m]: simulated time and distance driven when the exploration rate first "
-        "reached 98 %, mean ± sample standard deviation over the episodes that reached it. "
-        "Success: episodes whose final exploration rate is ≥ 98 %. *Paper*: the paper's Table I "
-        "(T s, L m). A group of worlds (world files of one folder, e.g. houseexpo) pools every "
-        "world × seed episode.\n\n"
-     << sourcesLine(report) << ".\n\n";
-  if (report.rows.empty()) return md.str() + "No episodes.\n";
+std::string table1Description() {
+  return "T98 [s] and L98 [m]: simulated time and distance driven when the exploration rate "
+         "first reached 98 %, mean ± sample standard deviation over the episodes that reached "
+         "it. Success: episodes whose final exploration rate is ≥ 98 %. *Paper*: the paper's "
+         "Table I (T s, L m). L98 / oracle (when the worlds could be loaded): each episode's L98 "
+         "divided by the length of the full-knowledge oracle tour of its world (see Oracle "
+         "reference), averaged. A group of worlds (world files of one folder, e.g. houseexpo) "
+         "pools every world × seed episode.";
+}
 
-  md << "| Method |";
-  std::string rule = "|---|";
+std::string revisitsDescription() {
+  return "Entries into a ground-truth room that had been entered before, mean ± sample "
+         "standard deviation over all episodes.";
+}
+
+std::string oracleDescription() {
+  return "The tour a robot that already knew the whole map would drive to see 98 % of the "
+         "reachable free space (sim/oracle_tour.hpp: greedy set cover of laser viewpoints, "
+         "ordered by a TSP heuristic over geodesic distances from the start), planned on the "
+         "ground truth with the episodes' options (map resolution, robot radius + safety "
+         "margin, laser range). A reference, not a bound: what the laser sees between "
+         "viewpoints is not counted. For a group, mean ± sd over its worlds.";
+}
+
+std::string table2Description() {
+  return "M1: 2D occupancy grid, M2: 3D point cloud, M3: topological map, M4: semantic map. "
+         "Above the line: the paper's Table II (its survey of earlier work, and its own "
+         "method). Below: each method of these results, ✓ when its episodes recorded that map "
+         "(stored bytes or updates). In roomscout every method's episode builds all four maps; "
+         "the strategies decide on the occupancy grid, and the semantic ones also read the "
+         "rooms.";
+}
+
+std::string table3Description() {
+  return "S: storage [KB = 1024 bytes] of the map's data files at the end of an episode "
+         "(occupancy: occupancy.pgm + occupancy.yaml; point cloud: pointcloud.pcd, "
+         "binary_compressed; topological: topology.json; semantic: semantic.json + "
+         "semantic_labels.png; pictures such as run.png are not counted), mean over episodes. "
+         "U: update time [s] as median / p95 of one episode's updates, each averaged over "
+         "episodes (occupancy: one laser scan; point cloud: one keyframe, ray cast + insert; "
+         "topological and semantic: one rebuild). Every method's episodes of a world are "
+         "pooled. *Paper*: the paper's Table III (S KB, U s).";
+}
+
+plots::HtmlTable table1Cells(const Report& report) {
+  plots::HtmlTable table;
+  table.caption = "Table I: exploration time and trajectory length";
+  const bool oracle = report.hasOracle();
+  table.header = {"Method"};
   for (const ReportRow& row : report.rows) {
-    const bool paper = !row.is_group && worldRank(row.name) < 100;
+    const bool paper = paperColumns(row);
     const std::string t = rowTitle(row);
-    md << " " << t << " T98 (s) |" << (paper ? " paper T |" : "") << " " << t << " L98 (m) |"
-       << (paper ? " paper L |" : "") << " " << t << " success |";
-    rule += paper ? "---:|---:|---:|---:|---:|" : "---:|---:|---:|";
+    table.header.push_back(t + " T98 (s)");
+    if (paper) table.header.push_back("paper T");
+    table.header.push_back(t + " L98 (m)");
+    if (paper) table.header.push_back("paper L");
+    if (oracle) table.header.push_back(t + " L98 / oracle");
+    table.header.push_back(t + " success");
   }
-  md << "\n" << rule << "\n";
   for (const std::string& method : report.methods) {
-    md << "| " << methodLabel(method) << " |";
+    std::vector<std::string> cells = {methodLabel(method)};
     for (const ReportRow& row : report.rows) {
-      const bool paper_cols = !row.is_group && worldRank(row.name) < 100;
+      const bool paper_cols = paperColumns(row);
       const auto it = report.table1.find({row.name, method});
       const std::optional<PaperTimeLength> paper = paperTable1(row.name, method);
-      const std::string paper_t = paper ? format("%.0f", paper->t_s) : "–";
-      const std::string paper_l = paper ? format("%.0f", paper->l_m) : "–";
-      if (it == report.table1.end()) {
-        md << " – |" << (paper_cols ? " " + paper_t + " |" : "") << " – |"
-           << (paper_cols ? " " + paper_l + " |" : "") << " – |";
-        continue;
+      const bool has = it != report.table1.end();
+      cells.push_back(has ? meanSd(it->second.t98_s) : "–");
+      if (paper_cols) cells.push_back(paper ? format("%.0f", paper->t_s) : "–");
+      cells.push_back(has ? meanSd(it->second.l98_m) : "–");
+      if (paper_cols) cells.push_back(paper ? format("%.0f", paper->l_m) : "–");
+      if (oracle) cells.push_back(has ? ratioText(it->second.l98_oracle_ratio) : "–");
+      if (has) {
+        const MethodStats& s = it->second;
+        cells.push_back(std::to_string(s.successes) + "/" + std::to_string(s.episodes) + " (" +
+                        percent(s.successes, s.episodes) + " %)");
+      } else {
+        cells.push_back("–");
       }
-      const MethodStats& s = it->second;
-      md << " " << meanSd(s.t98_s) << " |" << (paper_cols ? " " + paper_t + " |" : "") << " "
-         << meanSd(s.l98_m) << " |" << (paper_cols ? " " + paper_l + " |" : "") << " "
-         << s.successes << "/" << s.episodes << " ("
-         << format("%.0f",
-                   100.0 * static_cast<double>(s.successes) / static_cast<double>(s.episodes))
-         << " %) |";
     }
-    md << "\n";
+    table.rows.push_back(std::move(cells));
   }
+  return table;
+}
 
-  md << "\n## Revisits\n\nEntries into a ground-truth room that had been entered before, mean ± "
-        "sample standard deviation over all episodes.\n\n| Method |";
-  rule = "|---|";
-  for (const ReportRow& row : report.rows) {
-    md << " " << rowTitle(row) << " |";
-    rule += "---:|";
-  }
-  md << "\n" << rule << "\n";
+plots::HtmlTable revisitsCells(const Report& report) {
+  plots::HtmlTable table;
+  table.caption = "Revisits";
+  table.header = {"Method"};
+  for (const ReportRow& row : report.rows) table.header.push_back(rowTitle(row));
   for (const std::string& method : report.methods) {
-    md << "| " << methodLabel(method) << " |";
+    std::vector<std::string> cells = {methodLabel(method)};
     for (const ReportRow& row : report.rows) {
       const auto it = report.table1.find({row.name, method});
-      md << " " << (it == report.table1.end() ? std::string("–") : meanSd(it->second.revisits))
-         << " |";
+      cells.push_back(it == report.table1.end() ? std::string("–") : meanSd(it->second.revisits));
     }
-    md << "\n";
+    table.rows.push_back(std::move(cells));
   }
-  return md.str();
+  return table;
+}
+
+std::optional<plots::HtmlTable> oracleCells(const Report& report) {
+  if (!report.hasOracle()) return std::nullopt;
+  plots::HtmlTable table;
+  table.caption = "Oracle reference: full-knowledge tour";
+  table.header = {"World", "worlds with oracle", "oracle L (m)", "viewpoints", "coverage (%)"};
+  for (const ReportRow& row : report.rows) {
+    const auto it = report.oracle.find(row.name);
+    if (it == report.oracle.end()) {
+      table.rows.push_back({rowTitle(row), "0/" + std::to_string(row.worlds), "–", "–", "–"});
+      continue;
+    }
+    const OracleRowStats& o = it->second;
+    Stat coverage = o.coverage;
+    coverage.mean *= 100.0;
+    if (coverage.sd) *coverage.sd *= 100.0;
+    table.rows.push_back({rowTitle(row),
+                          std::to_string(o.worlds) + "/" + std::to_string(row.worlds),
+                          meanSd(o.length_m), meanSd(o.viewpoints, "%.0f"), meanSd(coverage)});
+  }
+  return table;
+}
+
+plots::HtmlTable table2Cells(const Report& report) {
+  plots::HtmlTable table;
+  table.caption = "Table II: map types built";
+  table.header = {"Method", "M1", "M2", "M3", "M4"};
+  const auto row = [&](const std::string& name, const std::array<bool, 4>& maps) {
+    std::vector<std::string> cells = {name};
+    for (bool m : maps) cells.push_back(m ? "✓" : "");
+    table.rows.push_back(std::move(cells));
+  };
+  for (const PaperMapTypesRow& r : paperTable2()) row(r.work, r.maps);
+  table.rows.push_back({"**roomscout**", "", "", "", ""});
+  for (const std::string& method : report.methods) {
+    const auto it = report.map_types.find(method);
+    row(methodLabel(method) + " (`" + method + "`)",
+        it == report.map_types.end() ? std::array<bool, 4>{} : it->second);
+  }
+  return table;
+}
+
+plots::HtmlTable table3Cells(const Report& report) {
+  plots::HtmlTable table;
+  table.caption = "Table III: storage and update time of each map";
+  table.header = {"Map type"};
+  for (const ReportRow& row : report.rows) {
+    const bool paper = paperColumns(row);
+    const std::string t = rowTitle(row);
+    table.header.push_back(t + " S (KB)");
+    if (paper) table.header.push_back("paper S");
+    table.header.push_back(t + " U median / p95 (s)");
+    if (paper) table.header.push_back("paper U");
+  }
+  const std::vector<std::string>& types = mapTypes();
+  for (std::size_t i = 0; i < types.size(); ++i) {
+    std::vector<std::string> cells = {kMapTitles[i]};
+    for (const ReportRow& row : report.rows) {
+      const bool paper_cols = paperColumns(row);
+      const std::optional<PaperMapCost> paper = paperTable3(row.name, types[i]);
+      const auto it = report.table3.find({row.name, types[i]});
+      std::string s = "–", u = "–";
+      if (it != report.table3.end()) {
+        const MapStats& m = it->second;
+        s = meanSd(m.storage_kb);
+        if (m.update_median_s.n) {
+          u = format("%.4f", m.update_median_s.mean) + " / " +
+              (m.update_p95_s.n ? format("%.4f", m.update_p95_s.mean) : std::string("–"));
+        }
+      }
+      cells.push_back(s);
+      if (paper_cols) cells.push_back(paper ? format("%.1f", paper->storage_kb) : "–");
+      cells.push_back(u);
+      if (paper_cols) cells.push_back(paper ? format("%.1f", paper->update_s) : "–");
+    }
+    table.rows.push_back(std::move(cells));
+  }
+  return table;
+}
+
+std::string table1Markdown(const Report& report) {
+  const std::string intro = "# Table I: exploration time and trajectory length\n\n" +
+                            table1Description() + "\n\n" + sourcesLine(report) + ".\n\n";
+  if (report.rows.empty()) return intro + "No episodes.\n";
+  plots::HtmlTable table = table1Cells(report);
+  table.caption.clear();
+  plots::HtmlTable revisits = revisitsCells(report);
+  revisits.caption.clear();
+  std::string md = intro + plots::markdownTable(table) + "\n" +
+                   markdownSection("## Revisits", revisitsDescription(), "", revisits);
+  if (std::optional<plots::HtmlTable> oracle = oracleCells(report)) {
+    oracle->caption.clear();
+    md += "\n" + markdownSection("## Oracle reference", oracleDescription(), "", *oracle);
+  }
+  return md;
 }
 
 std::string table1Csv(const Report& report) {
   std::ostringstream csv;
-  csv << "world,is_group,worlds,method,method_label,episodes,successes,success_rate,t98_n,t98_mean_"
-         "s,"
-         "t98_sd_s,l98_n,l98_mean_m,l98_sd_m,revisits_n,revisits_mean,revisits_sd,paper_t_s,paper_"
-         "l_m\n";
+  csv << "world,is_group,worlds,method,method_label,episodes,successes,success_rate,t98_n,t98_"
+         "mean_s,t98_sd_s,l98_n,l98_mean_m,l98_sd_m,revisits_n,revisits_mean,revisits_sd,paper_"
+         "t_s,paper_l_m,oracle_worlds,oracle_l_mean_m,oracle_l_sd_m,l98_oracle_ratio_n,l98_"
+         "oracle_ratio_mean,l98_oracle_ratio_sd\n";
   for (const ReportRow& row : report.rows) {
+    const auto oracle = report.oracle.find(row.name);
     for (const std::string& method : report.methods) {
       const auto it = report.table1.find({row.name, method});
       if (it == report.table1.end()) continue;
@@ -302,94 +557,44 @@ std::string table1Csv(const Report& report) {
           << "," << mean(s.l98_m) << "," << csvNumber(s.l98_m.sd) << "," << s.revisits.n << ","
           << mean(s.revisits) << "," << csvNumber(s.revisits.sd) << ","
           << (paper ? csvNumber(paper->t_s) : "") << "," << (paper ? csvNumber(paper->l_m) : "")
-          << "\n";
+          << ",";
+      if (oracle != report.oracle.end()) {
+        csv << oracle->second.worlds << "," << mean(oracle->second.length_m) << ","
+            << csvNumber(oracle->second.length_m.sd);
+      } else {
+        csv << "0,,";
+      }
+      csv << "," << s.l98_oracle_ratio.n << "," << mean(s.l98_oracle_ratio) << ","
+          << csvNumber(s.l98_oracle_ratio.sd) << "\n";
     }
   }
   return csv.str();
 }
 
 std::string table2Markdown(const Report& report) {
-  std::ostringstream md;
-  md << "# Table II: map types built\n\n"
-     << "M1: 2D occupancy grid, M2: 3D point cloud, M3: topological map, M4: semantic map. Above "
-        "the line: the paper's Table II (its survey of earlier work, and its own method). Below: "
-        "each method of these results, ✓ when its episodes recorded that map (stored bytes or "
-        "updates). In roomscout every method's episode builds all four maps; the strategies "
-        "decide on the occupancy grid, and the semantic ones also read the rooms.\n\n"
-     << sourcesLine(report) << ".\n\n"
-     << "| Method | M1 | M2 | M3 | M4 |\n|---|:-:|:-:|:-:|:-:|\n";
-  const auto row = [&](const std::string& name, const std::array<bool, 4>& maps) {
-    md << "| " << name << " |";
-    for (bool m : maps) md << (m ? " ✓ |" : "  |");
-    md << "\n";
-  };
-  for (const PaperMapTypesRow& r : paperTable2()) row(r.work, r.maps);
-  md << "| **roomscout** | | | | |\n";
-  for (const std::string& method : report.methods) {
-    const auto it = report.map_types.find(method);
-    row(methodLabel(method) + " (`" + method + "`)",
-        it == report.map_types.end() ? std::array<bool, 4>{} : it->second);
-  }
-  return md.str();
+  plots::HtmlTable table = table2Cells(report);
+  table.caption.clear();
+  return markdownSection("# Table II: map types built", table2Description(), sourcesLine(report),
+                         table);
 }
 
 std::string table3Markdown(const Report& report) {
-  std::ostringstream md;
-  md << "# Table III: storage and update time of each map\n\n"
-     << "S: storage [KB = 1024 bytes] of the map's data files at the end of an episode "
-        "(occupancy: occupancy.pgm + occupancy.yaml; point cloud: pointcloud.pcd, "
-        "binary_compressed; topological: topology.json; semantic: semantic.json + "
-        "semantic_labels.png; pictures such as run.png are not counted), mean over episodes. "
-        "U: update time [s] as median / p95 of one episode's updates, each averaged over "
-        "episodes (occupancy: one laser scan; point cloud: one keyframe, ray cast + insert; "
-        "topological and semantic: one rebuild). Every method's episodes of a world are pooled. "
-        "*Paper*: the paper's Table III (S KB, U s).\n\n"
-     << sourcesLine(report) << ".\n\n";
-  if (report.rows.empty()) return md.str() + "No episodes.\n";
-  md << "| Map type |";
-  std::string rule = "|---|";
-  for (const ReportRow& row : report.rows) {
-    const bool paper = !row.is_group && worldRank(row.name) < 100;
-    const std::string t = rowTitle(row);
-    md << " " << t << " S (KB) |" << (paper ? " paper S |" : "") << " " << t
-       << " U median / p95 (s) |" << (paper ? " paper U |" : "");
-    rule += paper ? "---:|---:|---:|---:|" : "---:|---:|";
-  }
-  md << "\n" << rule << "\n";
+  const std::string intro = "# Table III: storage and update time of each map\n\n" +
+                            table3Description() + "\n\n" + sourcesLine(report) + ".\n\n";
+  if (report.rows.empty()) return intro + "No episodes.\n";
+  plots::HtmlTable table = table3Cells(report);
+  table.caption.clear();
+  std::string md = intro + plots::markdownTable(table) + "\nEpisodes per world:";
   const std::vector<std::string>& types = mapTypes();
-  for (std::size_t i = 0; i < types.size(); ++i) {
-    md << "| " << kMapTitles[i] << " |";
-    for (const ReportRow& row : report.rows) {
-      const bool paper_cols = !row.is_group && worldRank(row.name) < 100;
-      const std::optional<PaperMapCost> paper = paperTable3(row.name, types[i]);
-      const auto it = report.table3.find({row.name, types[i]});
-      std::string s = "–", u = "–";
-      if (it != report.table3.end()) {
-        const MapStats& m = it->second;
-        s = meanSd(m.storage_kb);
-        if (m.update_median_s.n) {
-          u = format("%.4f", m.update_median_s.mean) + " / " +
-              (m.update_p95_s.n ? format("%.4f", m.update_p95_s.mean) : std::string("–"));
-        }
-      }
-      md << " " << s << " |"
-         << (paper_cols ? " " + (paper ? format("%.1f", paper->storage_kb) : "–") + " |" : "")
-         << " " << u << " |"
-         << (paper_cols ? " " + (paper ? format("%.1f", paper->update_s) : "–") + " |" : "");
-    }
-    md << "\n";
-  }
-  md << "\nEpisodes per world:";
   for (const ReportRow& row : report.rows) {
     std::size_t n = 0;
     for (const std::string& t : types) {
       const auto it = report.table3.find({row.name, t});
       if (it != report.table3.end()) n = std::max(n, it->second.episodes);
     }
-    md << " " << rowTitle(row) << " " << n << (&row == &report.rows.back() ? "." : ";");
+    md += " " + rowTitle(row) + " " + std::to_string(n) + (&row == &report.rows.back() ? "." : ";");
   }
-  md << "\n";
-  return md.str();
+  return md + "\n";
 }
 
 std::vector<fs::path> writeReport(const Report& report, const fs::path& directory) {

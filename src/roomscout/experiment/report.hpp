@@ -1,8 +1,9 @@
 #pragma once
 // `roomscout report`: tables in the layout of the paper's Tables I-III from one or more
-// results.jsonl files. Figures can be added on top: loadResults() gives every episode's key
-// and numbers, forEachRecord() (results_file.hpp) every full record with curves and
-// trajectory, and buildReport() the per world x method statistics.
+// results.jsonl files. loadResults() gives every episode's key, numbers, curve and (for runs
+// that kept their outputs) trajectory; attachOracleTours() (oracle_references.hpp) adds the
+// length of a full-knowledge tour of each world; buildReport() the per world x method
+// statistics. report_figures.hpp draws the figures, report_writer.hpp writes everything.
 
 #include <array>
 #include <cstddef>
@@ -15,7 +16,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include "roomscout/core/geometry.hpp"
 #include "roomscout/experiment/episode_key.hpp"
+#include "roomscout/plots/html_report.hpp"
 
 namespace roomscout::experiment {
 
@@ -27,7 +30,21 @@ struct MapSample {
   std::optional<double> update_p95_ms;
 };
 
-/// The numbers of one recorded episode that the tables use.
+/// One row of an episode's exploration curve.
+struct CurvePoint {
+  double length_m = 0.0;  ///< trajectory length driven so far [m]
+  double rate = 0.0;      ///< exploration rate, in [0, 1]
+};
+
+/// The full-knowledge reference tour of an episode's world (sim/oracle_tour.hpp), planned with
+/// the episode's options.
+struct OracleReference {
+  double length_m = 0.0;       ///< tour length [m]
+  double coverage = 0.0;       ///< fraction of the reachable free space it sees, [0, 1]
+  std::size_t viewpoints = 0;  ///< viewpoints visited
+};
+
+/// The numbers of one recorded episode that the tables and figures use.
 struct EpisodeSummary {
   EpisodeKey key;
   std::string world_group;  ///< "builtin" or the folder of the world file
@@ -37,11 +54,27 @@ struct EpisodeSummary {
   std::optional<double> revisits;
   std::map<std::string, MapSample> maps;  ///< by map type (record's map_stats)
   std::string where;                      ///< "file:line" of the record
+  /// What io::loadWorld takes to load the world again: a built-in name, or the world file as
+  /// the bench was given it (a relative path is relative to where the bench ran). From the
+  /// record's world_source ("builtin:NAME" or a path); for records without one, the world's
+  /// name when it is a built-in world; else empty.
+  std::string world_spec;
+  /// The record's option groups that shape the world model and the oracle tour (robot,
+  /// world, laser, mapping, costmap) as compact JSON; empty when the record has no options.
+  std::string world_setup;
+  /// The folder with the full outputs of `explore` (seed 1 of a bench): the record's
+  /// `outputs` against its results file's folder; empty when the record has none.
+  std::filesystem::path outputs_dir;
+  std::vector<CurvePoint> curve;   ///< rate against length (record's curve), in order
+  std::vector<Vec2> trajectory_m;  ///< positions (map frame), kept only for records with outputs
+  std::optional<OracleReference> oracle;  ///< set by attachOracleTours()
 };
 
 /// The episode's numbers from a results record. Throws InputError(where, ...) when the key or
-/// exploration_rate is missing or a field has the wrong type.
-EpisodeSummary summarizeRecord(const nlohmann::json& record, const std::string& where);
+/// exploration_rate is missing or a field has the wrong type. `results_dir` is the folder of
+/// the results file, against which the record's `outputs` is resolved.
+EpisodeSummary summarizeRecord(const nlohmann::json& record, const std::string& where,
+                               const std::filesystem::path& results_dir = {});
 
 /// Episodes merged from several results files, one per key.
 struct ResultSet {
@@ -79,6 +112,17 @@ struct MethodStats {
   Stat t98_s;                 ///< over the episodes that reached 98 %
   Stat l98_m;
   Stat revisits;  ///< over the episodes that recorded it
+  /// L98 / oracle tour length of the episode's world, over the episodes that reached 98 %
+  /// and have an oracle (for group rows: every plan x seed episode pooled).
+  Stat l98_oracle_ratio;
+};
+
+/// The oracle tour lengths of a row's worlds (one value per world, the first episode's).
+struct OracleRowStats {
+  std::size_t worlds = 0;  ///< worlds of the row with an oracle
+  Stat length_m;           ///< over those worlds
+  Stat coverage;
+  Stat viewpoints;
 };
 
 /// Table III's numbers for one row x map type, over every episode of the row (all methods).
@@ -95,14 +139,43 @@ struct Report {
   std::map<std::pair<std::string, std::string>, MethodStats> table1;  ///< (row, method)
   std::map<std::pair<std::string, std::string>, MapStats> table3;     ///< (row, map type)
   std::map<std::string, std::array<bool, 4>> map_types;  ///< method -> maps recorded (Table II)
+  std::map<std::string, OracleRowStats> oracle;  ///< by row; rows whose worlds have an oracle
   std::size_t episodes = 0;
   std::vector<std::filesystem::path> files;
+
+  /// True when some episode has an oracle: Table I then shows L98 / oracle.
+  bool hasOracle() const { return !oracle.empty(); }
 };
 
 /// Success threshold of Table I's success rate (final exploration rate).
 inline constexpr double kSuccessRate = 0.98;
 
 Report buildReport(const ResultSet& results);
+
+/// The report's tables as cells, shared by the markdown files and the HTML page: Table I
+/// (method rows, per world T98, paper T, L98, paper L, L98 / oracle when known, success),
+/// the revisits, the oracle reference (rows with an oracle; none when there is none),
+/// Table II and Table III.
+plots::HtmlTable table1Cells(const Report& report);
+plots::HtmlTable revisitsCells(const Report& report);
+std::optional<plots::HtmlTable> oracleCells(const Report& report);
+plots::HtmlTable table2Cells(const Report& report);
+plots::HtmlTable table3Cells(const Report& report);
+
+/// The text that explains each table (also on the HTML page).
+std::string table1Description();
+std::string revisitsDescription();
+std::string oracleDescription();
+std::string table2Description();
+std::string table3Description();
+/// "N episodes from `file`, ...".
+std::string sourcesLine(const Report& report);
+
+/// The row an episode belongs to: its world when built in, else its world's group.
+std::string rowNameOf(const EpisodeSummary& episode);
+
+/// A row's title in tables and figures: the world, or "group (N worlds)".
+std::string rowTitle(const ReportRow& row);
 
 std::string table1Markdown(const Report& report);
 std::string table1Csv(const Report& report);

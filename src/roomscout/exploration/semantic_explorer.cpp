@@ -20,6 +20,7 @@ void SemanticExplorerOptions::validate() const {
   }
   if (!finiteAtLeast(room_reward, 0.0)) throw OptionError("semantic.room_reward must be >= 0");
   if (!positive(gain_half_side_m)) throw OptionError("semantic.gain_half_side_m must be > 0");
+  if (!finiteAtLeast(min_unknown_m2, 0.0)) throw OptionError("semantic.min_unknown_m2 must be >= 0");
   if (!positive(eta_m)) throw OptionError("semantic.eta_m must be > 0");
   if (!positive(iterations_per_s)) throw OptionError("semantic.iterations_per_s must be > 0");
   if (!finiteAtLeast(replan_period_s, 0.0)) throw OptionError("semantic.replan_period_s must be >= 0");
@@ -42,6 +43,7 @@ std::vector<ParameterRef> SemanticExplorerOptions::parameters() {
       {"cost_weight", &cost_weight, "w_c: weight of C, the distance to the point [1/m]"},
       {"room_reward", &room_reward, "A: added to points in the current room, subtracted elsewhere"},
       {"gain_half_side_m", &gain_half_side_m, "half-side of the square G is measured in [m]"},
+      {"min_unknown_m2", &min_unknown_m2, "points with less unknown area in G's square are not goals [m^2]"},
       {"geodesic_cost", &geodesic_cost, "C is the path length through the costmap instead of the Euclidean distance"},
       {"eta_m", &eta_m, "tree steering step [m]"},
       {"iterations_per_s", &iterations_per_s, "tree iterations per simulated second"},
@@ -69,20 +71,27 @@ namespace {
 /// differ between standard libraries, and runs must not).
 double unit(std::mt19937_64& rng) { return static_cast<double>(rng() >> 11) * 0x1.0p-53; }
 
-/// (unknown - occupied) area [m^2] in the square of half-side `half_m` centred on `p`'s cell.
-double squareGain(const OccupancyGrid& grid, const Vec2& p, double half_m) {
+/// Unknown and occupied areas [m^2] in the square of half-side `half_m` centred on `p`'s cell.
+struct SquareAreas {
+  double unknown_m2 = 0.0;
+  double occupied_m2 = 0.0;
+};
+
+SquareAreas squareAreas(const OccupancyGrid& grid, const Vec2& p, double half_m) {
   const GridGeometry& g = grid.geometry();
   const Cell c = g.cellOf(p);
   const int r = static_cast<int>(std::lround(half_m / g.resolution_m()));
-  int sum = 0;
+  int unknown = 0, occupied = 0;
   for (int y = std::max(0, c.y - r); y <= std::min(g.height() - 1, c.y + r); ++y) {
     const std::size_t row = static_cast<std::size_t>(y) * g.width();
     for (int x = std::max(0, c.x - r); x <= std::min(g.width() - 1, c.x + r); ++x) {
       const CellState s = grid.state(row + x);
-      sum += s == CellState::kUnknown ? 1 : (s == CellState::kOccupied ? -1 : 0);
+      unknown += s == CellState::kUnknown;
+      occupied += s == CellState::kOccupied;
     }
   }
-  return sum * g.resolution_m() * g.resolution_m();
+  const double cell_m2 = g.resolution_m() * g.resolution_m();
+  return {unknown * cell_m2, occupied * cell_m2};
 }
 
 }  // namespace
@@ -172,14 +181,39 @@ void SemanticExplorer::collectCandidates(const ExplorationInput& input) {
   const Cell a = g.cellOf(lo - Vec2(pad, pad));
   const Cell b = g.cellOf(hi + Vec2(pad, pad));
   const int w = g.width();
-  for (int y = std::max(1, a.y); y <= std::min(g.height() - 2, b.y); ++y) {
-    for (int x = std::max(1, a.x); x <= std::min(w - 2, b.x); ++x) {
+  const int x0 = std::max(1, a.x), x1 = std::min(w - 2, b.x);
+  const int y0 = std::max(1, a.y), y1 = std::min(g.height() - 2, b.y);
+  if (x0 > x1 || y0 > y1) return;
+  // Unknown cells counted over the box grown by G's square, so that a frontier cell whose
+  // square holds less than min_unknown_m2 of unknown space (a sliver) is no candidate.
+  const int r = static_cast<int>(std::lround(options_.gain_half_side_m / g.resolution_m()));
+  const int bx0 = std::max(0, x0 - r), bx1 = std::min(w - 1, x1 + r);
+  const int by0 = std::max(0, y0 - r), by1 = std::min(g.height() - 1, y1 + r);
+  const int bw = bx1 - bx0 + 1, bh = by1 - by0 + 1;
+  std::vector<int> sat(static_cast<std::size_t>(bw + 1) * (bh + 1), 0);
+  for (int y = 0; y < bh; ++y) {
+    int row = 0;
+    for (int x = 0; x < bw; ++x) {
+      row += input.grid.isUnknown(static_cast<std::size_t>(by0 + y) * w + bx0 + x) ? 1 : 0;
+      sat[static_cast<std::size_t>(y + 1) * (bw + 1) + x + 1] = sat[static_cast<std::size_t>(y) * (bw + 1) + x + 1] + row;
+    }
+  }
+  auto unknownIn = [&](int cx, int cy) {
+    const int qx0 = std::max(bx0, cx - r) - bx0, qx1 = std::min(bx1, cx + r) - bx0 + 1;
+    const int qy0 = std::max(by0, cy - r) - by0, qy1 = std::min(by1, cy + r) - by0 + 1;
+    auto at = [&](int x, int y) { return sat[static_cast<std::size_t>(y) * (bw + 1) + x]; };
+    return at(qx1, qy1) - at(qx0, qy1) - at(qx1, qy0) + at(qx0, qy0);
+  };
+  const double cell_m2 = g.resolution_m() * g.resolution_m();
+  for (int y = y0; y <= y1; ++y) {
+    for (int x = x0; x <= x1; ++x) {
       const std::size_t i = static_cast<std::size_t>(y) * w + x;
       if (!input.grid.isFree(i) || input.costmap.isLethal(i)) continue;
       if (!input.grid.isUnknown(i - 1) && !input.grid.isUnknown(i + 1) && !input.grid.isUnknown(i - w) &&
           !input.grid.isUnknown(i + w)) {
         continue;
       }
+      if (unknownIn(x, y) * cell_m2 < options_.min_unknown_m2) continue;
       const Vec2 p = g.centerOf(Cell{x, y});
       if (roomOf(input, p) == room_) candidates_.push_back(p);
     }
@@ -330,8 +364,10 @@ Decision SemanticExplorer::decide(const ExplorationInput& input) {
     std::size_t best = points_.size();
     for (std::size_t i = 0; i < points_.size(); ++i) {
       if (!std::isfinite(c[i])) continue;  // no path through the costmap
+      const SquareAreas a = squareAreas(input.grid, points_[i].p, options_.gain_half_side_m);
+      if (a.unknown_m2 < options_.min_unknown_m2) continue;  // a sliver, not worth the trip
       const bool inside = room_ != 0 && roomOf(input, points_[i].anchor) == room_;
-      const double s = score(squareGain(input.grid, points_[i].p, options_.gain_half_side_m), c[i], inside);
+      const double s = score(a.unknown_m2 - a.occupied_m2, c[i], inside);
       if (s > best_score) {
         best_score = s;
         best = i;

@@ -49,10 +49,12 @@ namespace roomscout {
 
 struct SemanticExplorerOptions {
   double k = 0.1;                      ///< weight of the time in the room in P(P_sem) [1/s]
-  double gain_weight = 1.0;            ///< w_g [1/m^2]
+  double gain_weight = 3.0;            ///< w_g [1/m^2]
   double cost_weight = 1.0;            ///< w_c [1/m]
-  double room_reward = 10.0;           ///< A: added inside the current room, subtracted outside
+  double room_reward = 3.0;            ///< A: added inside the current room, subtracted outside
   double gain_half_side_m = 1.0;       ///< half-side of G's square [m]
+  double min_unknown_m2 = 1.0;         ///< points with less unknown area in the square are
+                                       ///< not goals (slivers along walls, furniture faces)
   bool geodesic_cost = false;          ///< C = path length through the costmap, not Euclidean
   double eta_m = 1.0;                  ///< tree step [m]
   double iterations_per_s = 100.0;     ///< tree iterations per simulated second

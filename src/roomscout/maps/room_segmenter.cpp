@@ -22,27 +22,54 @@ struct Core {
   int level = -1;
 };
 
-int findRoot(std::vector<int>& parent, int i) {
-  while (parent[i] != i) {
-    parent[i] = parent[parent[i]];
-    i = parent[i];
+/// A cell of the superlevel-set sweep's union-find; one cache line holds four. Fields other
+/// than `parent` are meaningful at roots only.
+struct SweepNode {
+  int parent = -1;    ///< -1: not in the sweep yet
+  int area = 0;       ///< cells of the component
+  int peak_cell = 0;  ///< a cell of highest clearance
+  int peak_core = 0;  ///< highest clearance bin << 1 | "holds a core"
+  int peak() const { return peak_core >> 1; }
+  bool core() const { return peak_core & 1; }
+};
+
+int findRoot(std::vector<SweepNode>& node, int i) {
+  while (node[i].parent != i) {
+    node[i].parent = node[node[i].parent].parent;
+    i = node[i].parent;
   }
   return i;
 }
 
+/// Buffers of one segmentation, kept per thread between calls so that an episode's updates
+/// do not allocate (and page-fault) ten image-sized arrays each time. Invariants between
+/// calls: every `node` has parent -1, every `label` is 0, every bucket is empty.
+struct Scratch {
+  cv::Mat space, cut_space, dist;
+  std::vector<int> bin, start, order, label, stack;
+  std::vector<SweepNode> node;
+  std::vector<std::vector<int>> buckets;
+  std::vector<Core> cores;
+};
+
+Scratch& scratch() {
+  thread_local Scratch s;
+  return s;
+}
 
 /// Door cuts in the spirit of ROSE²'s wall lines, for axis-aligned walls: a straight run of
 /// space between two wall ends that continue the same thin wall on both sides (jambs: a
 /// straight obstacle at least `jamb` cells long with space on both of its faces within
-/// `thick` cells) is a door in that wall. Returns the cut cells (255). `space` has a frame.
-cv::Mat doorCuts(const cv::Mat& space, int min_gap, int max_gap, int max_extension, int jamb, int thick) {
-  cv::Mat cuts = cv::Mat::zeros(space.size(), CV_8U);
-  if (max_gap <= 0 && max_extension <= 0) return cuts;
+/// `thick` cells) is a door in that wall. Clears the cut cells in `cut_space` (a copy of
+/// `space`); `space` has a frame.
+void cutDoors(const cv::Mat& space, cv::Mat& cut_space, int min_gap, int max_gap, int max_extension, int jamb,
+              int thick) {
+  if (max_gap <= 0 && max_extension <= 0) return;
   const int w = space.cols, h = space.rows;
   const std::uint8_t* sp = space.ptr<std::uint8_t>(0);
-  // Along direction (ax, ay); faces across it (fx, fy).
+  std::uint8_t* out = cut_space.ptr<std::uint8_t>(0);
   for (const bool horizontal : {true, false}) {
-    const int along = horizontal ? 1 : w, across = horizontal ? w : 1;
+    const int across = horizontal ? w : 1;
     const int lines = horizontal ? h : w, length = horizontal ? w : h;
     auto at = [&](int line, int pos) { return horizontal ? line * w + pos : pos * w + line; };
     auto isJamb = [&](int line, int pos, int dir) {
@@ -61,7 +88,6 @@ cv::Mat doorCuts(const cv::Mat& space, int min_gap, int max_gap, int max_extensi
       }
       return true;
     };
-    (void)along;
     for (int line = 1; line + 1 < lines; ++line) {
       int pos = 1;
       while (pos < length - 1) {
@@ -77,12 +103,229 @@ cv::Mat doorCuts(const cv::Mat& space, int min_gap, int max_gap, int max_extensi
         // A gap between two ends of the same wall is a door; a wall end that continues
         // across a gap to any obstacle is a wall line extended (a wide opening).
         if ((left && right && gap <= max_gap) || ((left || right) && gap <= max_extension)) {
-          for (int q = start; q < pos; ++q) cuts.ptr<std::uint8_t>(0)[at(line, q)] = 255;
+          for (int q = start; q < pos; ++q) out[at(line, q)] = 0;
         }
       }
     }
   }
-  return cuts;
+}
+
+/// The segmentation of `states` (the known part of a map) into `labels` (CV_32S, zeros, same
+/// size); returns the number of rooms.
+int segmentKnown(const RoomSegmenterOptions& options, const cv::Mat& states, double resolution_m, cv::Mat& labels) {
+  Scratch& s = scratch();
+  const double cell_area = resolution_m * resolution_m;
+  // A one-cell frame of non-space lets the loops below skip bounds checks.
+  cv::copyMakeBorder(maps::fillableFreeSpace(states, static_cast<int>(options.furniture_max_area_m2 / cell_area),
+                                             static_cast<int>(std::ceil(options.furniture_max_extent_m / resolution_m))),
+                     s.space, 1, 1, 1, 1, cv::BORDER_CONSTANT, 0);
+  const cv::Mat& space = s.space;
+  // Doors found as gaps in straight walls are cut before the cores are sought.
+  space.copyTo(s.cut_space);
+  cutDoors(space, s.cut_space, static_cast<int>(std::lround(options.door_cut_min_width_m / resolution_m)),
+           static_cast<int>(std::lround(options.door_cut_max_width_m / resolution_m)),
+           static_cast<int>(std::lround(options.wall_extension_max_m / resolution_m)),
+           std::max(1, static_cast<int>(std::lround(options.jamb_min_length_m / resolution_m))),
+           std::max(1, static_cast<int>(std::lround(options.wall_max_thickness_m / resolution_m))));
+  cv::distanceTransform(s.cut_space, s.dist, cv::DIST_L2, cv::DIST_MASK_PRECISE, CV_32F);
+
+  const int w = space.cols;
+  const int n = space.rows * space.cols;
+  const std::uint8_t* sp = space.ptr<std::uint8_t>(0);
+  const std::uint8_t* csp = s.cut_space.ptr<std::uint8_t>(0);
+  const float* dp = s.dist.ptr<float>(0);
+  // Clearance bins, read only on space cells (0 on the cuts).
+  std::vector<int>& bin = s.bin;
+  if (bin.size() < static_cast<std::size_t>(n)) bin.resize(n);
+  int max_bin = 0;
+  for (int i = 0; i < n; ++i) {
+    if (!sp[i]) continue;
+    bin[i] = static_cast<int>(dp[i] * kBinsPerCell);
+    max_bin = std::max(max_bin, bin[i]);
+  }
+  // Cut-space cells sorted by decreasing clearance (counting sort, stable).
+  std::vector<int>& start = s.start;
+  start.assign(max_bin + 2, 0);
+  for (int i = 0; i < n; ++i) {
+    if (csp[i]) ++start[max_bin - bin[i] + 1];
+  }
+  std::partial_sum(start.begin(), start.end(), start.begin());
+  std::vector<int>& order = s.order;
+  order.resize(start.back());
+  {
+    std::vector<int> next(start.begin(), start.end() - 1);
+    for (int i = 0; i < n; ++i) {
+      if (csp[i]) order[next[max_bin - bin[i]]++] = i;
+    }
+  }
+
+  const double per_cell = kBinsPerCell / resolution_m;
+  const int door_bin = static_cast<int>(0.5 * options.door_max_width_m * per_cell);
+  const int core_bin = static_cast<int>(options.min_core_clearance_m * per_cell);
+  const int min_room_cells = static_cast<int>(options.min_room_area_m2 / cell_area);
+  const int min_isolated_cells = static_cast<int>(options.min_isolated_area_m2 / cell_area);
+  const double ratio = options.neck_ratio;
+  const int offsets[4] = {1, -1, w, -w};
+
+  // Sweep of the superlevel sets of clearance (union-find). When a neck joins two components
+  // that are both rooms (large enough, with a core far from walls) and the neck is narrow
+  // for both, each becomes a core, unless it holds cores already.
+  std::vector<SweepNode>& node = s.node;
+  if (node.size() < static_cast<std::size_t>(n)) node.resize(n);
+  std::vector<Core>& cores = s.cores;
+  cores.clear();
+  auto isRoom = [&](int r) { return node[r].area >= min_room_cells && node[r].peak() >= core_bin; };
+  for (int rank = 0; rank <= max_bin; ++rank) {
+    const int level = max_bin - rank;
+    for (int i = start[rank]; i < start[rank + 1]; ++i) {
+      const int p = order[i];
+      node[p] = {p, 1, p, level << 1};
+      for (const int off : offsets) {
+        const int q = p + off;
+        if (node[q].parent < 0) continue;
+        int a = findRoot(node, p), b = findRoot(node, q);
+        if (a == b) continue;
+        if (level <= door_bin && isRoom(a) && isRoom(b) && level <= ratio * node[a].peak() &&
+            level <= ratio * node[b].peak()) {
+          for (const int r : {a, b}) {
+            if (!node[r].core()) cores.push_back({node[r].peak_cell, level});
+            node[r].peak_core |= 1;
+          }
+        }
+        if (node[a].area < node[b].area) std::swap(a, b);
+        SweepNode& na = node[a];
+        const SweepNode& nb = node[b];
+        node[b].parent = a;
+        na.area += nb.area;
+        const int core = (na.peak_core | nb.peak_core) & 1;
+        if (nb.peak() > na.peak()) {
+          na.peak_core = nb.peak_core;
+          na.peak_cell = nb.peak_cell;
+        }
+        na.peak_core = (na.peak_core & ~1) | core;
+      }
+    }
+  }
+  for (const int p : order) {
+    const SweepNode& np = node[p];
+    if (np.parent == p && !np.core() && np.area >= min_isolated_cells) cores.push_back({np.peak_cell, -1});
+  }
+  for (const int p : order) node[p].parent = -1;
+
+  // Cores become labels; they grow back into all of the space by decreasing clearance.
+  std::vector<int>& label = s.label;
+  if (label.size() < static_cast<std::size_t>(n)) label.resize(n, 0);
+  std::vector<std::vector<int>>& buckets = s.buckets;
+  if (buckets.size() < static_cast<std::size_t>(max_bin + 1)) buckets.resize(max_bin + 1);
+  std::vector<int>& stack = s.stack;
+  for (std::size_t k = 0; k < cores.size(); ++k) {
+    const int id = static_cast<int>(k) + 1;
+    stack.assign(1, cores[k].pixel);
+    label[cores[k].pixel] = id;
+    while (!stack.empty()) {
+      const int p = stack.back();
+      stack.pop_back();
+      buckets[bin[p]].push_back(p);
+      for (const int off : offsets) {
+        const int q = p + off;
+        if (csp[q] && !label[q] && bin[q] > cores[k].level) {
+          label[q] = id;
+          stack.push_back(q);
+        }
+      }
+    }
+  }
+  for (int level = max_bin; level >= 0; --level) {
+    // Cells pushed while this level is processed land in this same bucket: index, not iterate.
+    std::vector<int>& bucket = buckets[level];
+    for (std::size_t i = 0; i < bucket.size(); ++i) {
+      const int p = bucket[i];
+      for (const int off : offsets) {
+        const int q = p + off;
+        if (sp[q] && !label[q]) {
+          label[q] = label[p];
+          buckets[std::min(level, bin[q])].push_back(q);
+        }
+      }
+    }
+    bucket.clear();
+  }
+
+  // Merge small segments into the neighbour they share the longest border with.
+  const int count = static_cast<int>(cores.size());
+  std::vector<int> seg_area(count + 1, 0);
+  std::vector<std::map<int, int>> border(count + 1);
+  const auto kFree = static_cast<std::uint8_t>(CellState::kFree);
+  for (int y = 1; y + 1 < space.rows; ++y) {
+    const std::uint8_t* st = states.ptr<std::uint8_t>(y - 1);
+    const int* lrow = label.data() + static_cast<std::size_t>(y) * w;
+    for (int x = 1; x + 1 < w; ++x) {
+      const int l = lrow[x];
+      if (!l) continue;
+      if (st[x - 1] == kFree) ++seg_area[l];
+      for (const int m : {lrow[x + 1], lrow[x + w]}) {
+        if (m && m != l) {
+          ++border[l][m];
+          ++border[m][l];
+        }
+      }
+    }
+  }
+  std::vector<int> merged_into(count + 1);
+  std::iota(merged_into.begin(), merged_into.end(), 0);
+  auto rep = [&](int l) {
+    while (merged_into[l] != l) l = merged_into[l] = merged_into[merged_into[l]];
+    return l;
+  };
+  std::vector<int> by_area(count);
+  std::iota(by_area.begin(), by_area.end(), 1);
+  std::stable_sort(by_area.begin(), by_area.end(), [&](int a, int b) { return seg_area[a] < seg_area[b]; });
+  for (const int seg : by_area) {
+    if (rep(seg) != seg || seg_area[seg] >= min_room_cells) continue;
+    int best = 0, best_len = 0;
+    std::map<int, int> total;
+    for (const auto& [nb, len] : border[seg]) {
+      const int r = rep(nb);
+      if (r != seg) total[r] += len;
+    }
+    for (const auto& [r, len] : total) {
+      if (len > best_len) {
+        best = r;
+        best_len = len;
+      }
+    }
+    if (!best) continue;
+    merged_into[seg] = best;
+    seg_area[best] += seg_area[seg];
+    for (const auto& [nb, len] : total) {
+      if (nb != best) {
+        border[best][nb] += len;
+        border[nb][best] += len;
+      }
+    }
+  }
+
+  // Only free cells carry labels; number rooms in row-major order of first appearance. The
+  // scratch labels are cleared on the way (only space cells, all inside the frame, hold any).
+  std::vector<int> final_id(count + 1, -1);
+  final_id[0] = 0;
+  int next = 0;
+  for (int y = 0; y < states.rows; ++y) {
+    const auto* srow = states.ptr<std::uint8_t>(y);
+    int* lrow = label.data() + static_cast<std::size_t>(y + 1) * w + 1;
+    int* out = labels.ptr<int>(y);
+    for (int x = 0; x < states.cols; ++x) {
+      const int l = lrow[x];
+      if (!l) continue;
+      lrow[x] = 0;
+      if (srow[x] != kFree) continue;
+      const int r = rep(l);
+      if (seg_area[r] < min_isolated_cells) continue;
+      if (final_id[r] < 0) final_id[r] = ++next;
+      out[x] = final_id[r];
+    }
+  }
+  return next;
 }
 
 }  // namespace
@@ -135,207 +378,8 @@ RoomSegmentation RoomSegmenter::segment(const cv::Mat& states, double resolution
   // Work on the known part only (a partial map is mostly unknown).
   const cv::Rect known = maps::knownBounds(states, 2);
   if (known.empty()) return result;
-  if (known.size() != states.size()) {
-    RoomSegmentation crop = segment(states(known).clone(), resolution_m);
-    crop.labels.copyTo(result.labels(known));
-    result.room_count = crop.room_count;
-    return result;
-  }
-
-  const double cell_area = resolution_m * resolution_m;
-  const cv::Mat space_raw =
-      maps::fillableFreeSpace(states, static_cast<int>(options_.furniture_max_area_m2 / cell_area),
-                              static_cast<int>(std::ceil(options_.furniture_max_extent_m / resolution_m)));
-  // A one-cell frame of non-space lets the loops below skip bounds checks.
-  cv::Mat space;
-  cv::copyMakeBorder(space_raw, space, 1, 1, 1, 1, cv::BORDER_CONSTANT, 0);
-  // Doors found as gaps in straight walls are cut before the cores are sought.
-  const cv::Mat cuts = doorCuts(space, static_cast<int>(std::lround(options_.door_cut_min_width_m / resolution_m)),
-                                static_cast<int>(std::lround(options_.door_cut_max_width_m / resolution_m)),
-                                static_cast<int>(std::lround(options_.wall_extension_max_m / resolution_m)),
-                                std::max(1, static_cast<int>(std::lround(options_.jamb_min_length_m / resolution_m))),
-                                std::max(1, static_cast<int>(std::lround(options_.wall_max_thickness_m / resolution_m))));
-  cv::Mat cut_space = space & ~cuts;
-  cv::Mat dist;
-  cv::distanceTransform(cut_space, dist, cv::DIST_L2, cv::DIST_MASK_PRECISE, CV_32F);
-
-  const int w = space.cols;
-  const int n = space.rows * space.cols;
-  const std::uint8_t* sp = space.ptr<std::uint8_t>(0);
-  const std::uint8_t* csp = cut_space.ptr<std::uint8_t>(0);
-  const float* dp = dist.ptr<float>(0);
-  std::vector<int> bin(n, 0);
-  int max_bin = 0;
-  for (int i = 0; i < n; ++i) {
-    if (!sp[i]) continue;
-    bin[i] = static_cast<int>(dp[i] * kBinsPerCell);  // 0 on the cuts
-    max_bin = std::max(max_bin, bin[i]);
-  }
-  // Space cells sorted by decreasing clearance (counting sort).
-  std::vector<int> start(max_bin + 2, 0);
-  for (int i = 0; i < n; ++i) {
-    if (csp[i]) ++start[max_bin - bin[i] + 1];
-  }
-  std::partial_sum(start.begin(), start.end(), start.begin());
-  std::vector<int> order(start.back());
-  for (int i = 0; i < n; ++i) {
-    if (csp[i]) order[start[max_bin - bin[i]]++] = i;
-  }
-
-  const double per_cell = kBinsPerCell / resolution_m;
-  const int door_bin = static_cast<int>(0.5 * options_.door_max_width_m * per_cell);
-  const int core_bin = static_cast<int>(options_.min_core_clearance_m * per_cell);
-  const int min_room_cells = static_cast<int>(options_.min_room_area_m2 / cell_area);
-  const int min_isolated_cells = static_cast<int>(options_.min_isolated_area_m2 / cell_area);
-  const double ratio = options_.neck_ratio;
-  const int offsets[4] = {1, -1, w, -w};
-
-  // Sweep of the superlevel sets of clearance (union-find). When a neck joins two components
-  // that are both rooms (large enough, with a core far from walls) and the neck is narrow
-  // for both, each becomes a core, unless it holds cores already.
-  std::vector<int> parent(n, -1), area(n, 0), peak(n, 0), peak_cell(n, 0);
-  std::vector<std::uint8_t> has_core(n, 0);
-  std::vector<Core> cores;
-  auto isRoom = [&](int r) { return area[r] >= min_room_cells && peak[r] >= core_bin; };
-  for (const int p : order) {
-    parent[p] = p;
-    area[p] = 1;
-    peak[p] = bin[p];
-    peak_cell[p] = p;
-    const int level = bin[p];
-    for (const int off : offsets) {
-      const int q = p + off;
-      if (parent[q] < 0) continue;
-      int a = findRoot(parent, p), b = findRoot(parent, q);
-      if (a == b) continue;
-      if (level <= door_bin && isRoom(a) && isRoom(b) && level <= ratio * peak[a] && level <= ratio * peak[b]) {
-        for (const int r : {a, b}) {
-          if (!has_core[r]) cores.push_back({peak_cell[r], level});
-          has_core[r] = 1;
-        }
-      }
-      if (area[a] < area[b]) std::swap(a, b);
-      parent[b] = a;
-      area[a] += area[b];
-      if (peak[b] > peak[a]) {
-        peak[a] = peak[b];
-        peak_cell[a] = peak_cell[b];
-      }
-      has_core[a] = has_core[a] || has_core[b];
-    }
-  }
-  for (const int p : order) {
-    if (parent[p] == p && !has_core[p] && area[p] >= min_isolated_cells) cores.push_back({peak_cell[p], -1});
-  }
-
-  // Cores become labels; they grow back into all of the space by decreasing clearance.
-  std::vector<int> label(n, 0);
-  std::vector<std::vector<int>> buckets(max_bin + 1);
-  std::vector<int> stack;
-  for (std::size_t k = 0; k < cores.size(); ++k) {
-    const int id = static_cast<int>(k) + 1;
-    stack.assign(1, cores[k].pixel);
-    label[cores[k].pixel] = id;
-    while (!stack.empty()) {
-      const int p = stack.back();
-      stack.pop_back();
-      buckets[bin[p]].push_back(p);
-      for (const int off : offsets) {
-        const int q = p + off;
-        if (csp[q] && !label[q] && bin[q] > cores[k].level) {
-          label[q] = id;
-          stack.push_back(q);
-        }
-      }
-    }
-  }
-  for (int level = max_bin; level >= 0; --level) {
-    // Cells pushed while this level is processed land in this same bucket: index, not iterate.
-    for (std::size_t i = 0; i < buckets[level].size(); ++i) {
-      const int p = buckets[level][i];
-      for (const int off : offsets) {
-        const int q = p + off;
-        if (sp[q] && !label[q]) {
-          label[q] = label[p];
-          buckets[std::min(level, bin[q])].push_back(q);
-        }
-      }
-    }
-    std::vector<int>().swap(buckets[level]);
-  }
-
-  // Merge small segments into the neighbour they share the longest border with.
-  const int count = static_cast<int>(cores.size());
-  std::vector<int> seg_area(count + 1, 0);
-  std::vector<std::map<int, int>> border(count + 1);
-  const std::uint8_t* st = nullptr;
-  for (int y = 1; y + 1 < space.rows; ++y) {
-    st = states.ptr<std::uint8_t>(y - 1);
-    for (int x = 1; x + 1 < w; ++x) {
-      const int p = y * w + x;
-      const int l = label[p];
-      if (!l) continue;
-      if (st[x - 1] == static_cast<std::uint8_t>(CellState::kFree)) ++seg_area[l];
-      for (const int q : {p + 1, p + w}) {
-        if (label[q] && label[q] != l) {
-          ++border[l][label[q]];
-          ++border[label[q]][l];
-        }
-      }
-    }
-  }
-  std::vector<int> merged_into(count + 1);
-  std::iota(merged_into.begin(), merged_into.end(), 0);
-  auto rep = [&](int l) {
-    while (merged_into[l] != l) l = merged_into[l] = merged_into[merged_into[l]];
-    return l;
-  };
-  std::vector<int> by_area(count);
-  std::iota(by_area.begin(), by_area.end(), 1);
-  std::stable_sort(by_area.begin(), by_area.end(), [&](int a, int b) { return seg_area[a] < seg_area[b]; });
-  for (const int s : by_area) {
-    if (rep(s) != s || seg_area[s] >= min_room_cells) continue;
-    int best = 0, best_len = 0;
-    std::map<int, int> total;
-    for (const auto& [nb, len] : border[s]) {
-      const int r = rep(nb);
-      if (r != s) total[r] += len;
-    }
-    for (const auto& [r, len] : total) {
-      if (len > best_len) {
-        best = r;
-        best_len = len;
-      }
-    }
-    if (!best) continue;
-    merged_into[s] = best;
-    seg_area[best] += seg_area[s];
-    for (const auto& [nb, len] : total) {
-      if (nb != best) {
-        border[best][nb] += len;
-        border[nb][best] += len;
-      }
-    }
-  }
-
-  // Only free cells carry labels; number rooms in row-major order of first appearance.
-  std::vector<int> final_id(count + 1, -1);
-  final_id[0] = 0;
-  int next = 0;
-  for (int y = 0; y < states.rows; ++y) {
-    const auto* srow = states.ptr<std::uint8_t>(y);
-    int* out = result.labels.ptr<int>(y);
-    for (int x = 0; x < states.cols; ++x) {
-      if (srow[x] != static_cast<std::uint8_t>(CellState::kFree)) continue;
-      const int l = label[(y + 1) * w + x + 1];
-      if (!l) continue;
-      const int r = rep(l);
-      if (seg_area[r] < min_isolated_cells) continue;
-      if (final_id[r] < 0) final_id[r] = ++next;
-      out[x] = final_id[r];
-    }
-  }
-  result.room_count = next;
+  cv::Mat labels = result.labels(known);
+  result.room_count = segmentKnown(options_, states(known), resolution_m, labels);
   return result;
 }
 

@@ -1,87 +1,106 @@
 #include "roomscout/maps/thinning.hpp"
 
+#include <array>
 #include <vector>
 
 #include "roomscout/core/errors.hpp"
 
 namespace roomscout::maps {
+namespace {
+
+/// Zhang-Suen's deletion rule for one sub-iteration, tabulated over the 8-neighbourhood
+/// code (bit k set = neighbour P(k+2) is foreground; P2..P9 = N, NE, E, SE, S, SW, W, NW).
+constexpr std::array<std::uint8_t, 256> deletionTable(int pass) {
+  std::array<std::uint8_t, 256> table{};
+  for (int code = 0; code < 256; ++code) {
+    bool n[8] = {};
+    int b = 0;
+    for (int k = 0; k < 8; ++k) b += (n[k] = (code >> k) & 1);
+    int a = 0;
+    for (int k = 0; k < 8; ++k) a += (!n[k] && n[(k + 1) % 8]);
+    const bool m1 = pass == 0 ? (n[0] && n[2] && n[4]) : (n[0] && n[2] && n[6]);
+    const bool m2 = pass == 0 ? (n[2] && n[4] && n[6]) : (n[0] && n[4] && n[6]);
+    table[code] = b >= 2 && b <= 6 && a == 1 && !m1 && !m2;
+  }
+  return table;
+}
+
+constexpr std::array<std::uint8_t, 256> kDelete[2] = {deletionTable(0), deletionTable(1)};
+
+}  // namespace
 
 cv::Mat thinZhangSuen(const cv::Mat& binary) {
   if (binary.type() != CV_8U) throw InvalidArgument("thinZhangSuen: image must be CV_8U");
   const int w = binary.cols, h = binary.rows;
   cv::Mat out = cv::Mat::zeros(h, w, CV_8U);
   if (w < 3 || h < 3) return out;
+  // Working image: 1 = foreground; bit 1 (listed[0]) and bit 2 (listed[1]) mark the pixels
+  // queued for the next sub-iteration of each kind.
   std::vector<std::uint8_t> img(static_cast<std::size_t>(w) * h, 0);
   for (int y = 1; y + 1 < h; ++y) {
     const auto* row = binary.ptr<std::uint8_t>(y);
-    for (int x = 1; x + 1 < w; ++x) img[y * w + x] = row[x] != 0;
+    std::uint8_t* dst = img.data() + static_cast<std::size_t>(y) * w;
+    for (int x = 1; x + 1 < w; ++x) dst[x] = row[x] != 0;
   }
   // Neighbour offsets P2..P9: N, NE, E, SE, S, SW, W, NW (N = previous row).
   const int off[8] = {-w, -w + 1, 1, w + 1, w, w - 1, -1, -w - 1};
-  auto isBorder = [&](int p) {
-    if (!img[p]) return false;
-    for (const int o : off) {
-      if (!img[p + o]) return true;
-    }
-    return false;
+  auto code = [&](int p) {
+    const std::uint8_t* c = img.data() + p;
+    return (c[off[0]] & 1) | (c[off[1]] & 1) << 1 | (c[off[2]] & 1) << 2 | (c[off[3]] & 1) << 3 |
+           (c[off[4]] & 1) << 4 | (c[off[5]] & 1) << 5 | (c[off[6]] & 1) << 6 | (c[off[7]] & 1) << 7;
   };
-  std::vector<int> list;
-  std::vector<std::uint8_t> listed(img.size(), 0);
+  // A pixel's verdict in a sub-iteration depends only on its 8-neighbourhood and on the kind
+  // of sub-iteration. So each kind keeps its own queue: the border pixels at first, then the
+  // foreground neighbours of deleted pixels; a pixel tested and kept is not tested again by
+  // that kind until a neighbour is deleted. Every pass still deletes exactly the pixels the
+  // textbook full-image pass deletes (deletable pixels always have a background neighbour),
+  // so the skeleton is the same, but skeleton pixels are not re-tested once per iteration.
+  std::vector<int> queue[2], removed;
+  constexpr std::uint8_t kQueued[2] = {2, 4};
   for (int y = 1; y + 1 < h; ++y) {
     for (int x = 1; x + 1 < w; ++x) {
       const int p = y * w + x;
-      if (isBorder(p)) {
-        list.push_back(p);
-        listed[p] = 1;
+      if (img[p] && code(p) != 0xFF) {
+        queue[0].push_back(p);
+        queue[1].push_back(p);
+        img[p] |= kQueued[0] | kQueued[1];
       }
     }
   }
-  std::vector<int> removed, next;
-  for (bool changed = true; changed;) {
-    changed = false;
-    for (int pass = 0; pass < 2; ++pass) {
-      removed.clear();
-      for (const int p : list) {
-        if (!img[p]) continue;
-        std::uint8_t n[8];
-        int b = 0;
-        for (int k = 0; k < 8; ++k) b += (n[k] = img[p + off[k]]);
-        if (b < 2 || b > 6) continue;
-        int a = 0;
-        for (int k = 0; k < 8; ++k) a += (!n[k] && n[(k + 1) % 8]);
-        if (a != 1) continue;
-        const bool m1 = pass == 0 ? (n[0] && n[2] && n[4]) : (n[0] && n[2] && n[6]);
-        const bool m2 = pass == 0 ? (n[2] && n[4] && n[6]) : (n[0] && n[4] && n[6]);
-        if (m1 || m2) continue;
-        removed.push_back(p);
-      }
-      if (removed.empty()) continue;
-      changed = true;
-      for (const int p : removed) img[p] = 0;
-      // Next candidates: surviving listed pixels and the foreground neighbours of removed ones.
-      next.clear();
-      for (const int p : list) {
-        if (img[p]) {
-          next.push_back(p);
-        } else {
-          listed[p] = 0;
-        }
-      }
-      for (const int p : removed) {
-        for (const int o : off) {
-          const int q = p + o;
-          if (img[q] && !listed[q]) {
-            listed[q] = 1;
-            next.push_back(q);
+  for (int idle = 0, pass = 0; idle < 2; pass ^= 1) {
+    // The textbook loop stops after an iteration (two sub-iterations) deletes nothing; an
+    // idle sub-iteration followed by an idle one of the other kind is the same condition
+    // once one full iteration has run.
+    const auto& table = kDelete[pass];
+    removed.clear();
+    for (const int p : queue[pass]) {
+      img[p] &= static_cast<std::uint8_t>(~kQueued[pass]);
+      if ((img[p] & 1) && table[code(p)]) removed.push_back(p);
+    }
+    queue[pass].clear();
+    if (removed.empty()) {
+      ++idle;
+      continue;
+    }
+    idle = 0;
+    for (const int p : removed) img[p] &= static_cast<std::uint8_t>(~1);
+    for (const int p : removed) {
+      for (const int o : off) {
+        const int q = p + o;
+        if (!(img[q] & 1)) continue;
+        for (int k = 0; k < 2; ++k) {
+          if (!(img[q] & kQueued[k])) {
+            img[q] |= kQueued[k];
+            queue[k].push_back(q);
           }
         }
       }
-      list.swap(next);
     }
   }
   for (int y = 1; y + 1 < h; ++y) {
     auto* row = out.ptr<std::uint8_t>(y);
-    for (int x = 1; x + 1 < w; ++x) row[x] = img[y * w + x] ? 255 : 0;
+    const std::uint8_t* src = img.data() + static_cast<std::size_t>(y) * w;
+    for (int x = 1; x + 1 < w; ++x) row[x] = (src[x] & 1) ? 255 : 0;
   }
   return out;
 }

@@ -48,9 +48,11 @@ bool numeric(const std::string& cell) {
     if (i < cell.size() && (cell[i] == '-' || cell[i] == '+')) ++i;
     while (i < cell.size() && std::isdigit(static_cast<unsigned char>(cell[i]))) ++i;
   }
-  // Allow "%", "x" or a short suffix after a space: a unit (" m") or a spread (" ± 1.2").
+  // Allow "%", "x", "×" (a ratio) or a short suffix after a space: a unit (" m") or a
+  // spread (" ± 1.2").
   const std::string rest = cell.substr(i);
-  return rest.empty() || rest == "%" || rest == "x" || (rest[0] == ' ' && rest.size() <= 8);
+  return rest.empty() || rest == "%" || rest == "x" || rest == "\u00d7" ||
+         (rest[0] == ' ' && rest.size() <= 8);
 }
 
 std::string stripXmlDeclaration(const std::string& svg) {

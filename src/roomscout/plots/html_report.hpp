@@ -18,7 +18,7 @@ struct HtmlParagraph {
 };
 
 /// A table given as a markdown table is: a header row and rows of cell strings. Cells that
-/// read as numbers ("12.5", "-3", "98 %", "1.2e3") are right-aligned.
+/// read as numbers ("12.5", "-3", "98 %", "1.2e3", "1.45×") are right-aligned.
 struct HtmlTable {
   std::string caption;  ///< none when empty
   std::vector<std::string> header;

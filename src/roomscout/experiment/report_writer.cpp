@@ -1,0 +1,98 @@
+#include "roomscout/experiment/report_writer.hpp"
+
+#include "roomscout/experiment/oracle_references.hpp"
+
+namespace roomscout::experiment {
+namespace fs = std::filesystem;
+namespace {
+
+/// Markdown emphasis and code marks taken out, for the HTML page.
+std::string plain(std::string text) {
+  std::string out;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if (text[i] == '`' || text[i] == '*') continue;
+    out += text[i];
+  }
+  return out;
+}
+
+plots::HtmlTable plainTable(plots::HtmlTable table) {
+  for (std::string& h : table.header) h = plain(h);
+  for (auto& row : table.rows) {
+    for (std::string& cell : row) cell = plain(cell);
+  }
+  return table;
+}
+
+}  // namespace
+
+plots::HtmlPage reportPage(const Report& report, const std::vector<ReportFigure>& figures,
+                           const std::vector<std::string>& notes) {
+  plots::HtmlPage page;
+  page.title = "roomscout report";
+  page.intro.push_back({plain(sourcesLine(report)) + "."});
+  for (const std::string& n : notes) page.intro.push_back({"Note: " + n});
+
+  plots::HtmlSection t1{"Table I: exploration time and trajectory length", {}};
+  t1.blocks.push_back(plots::HtmlParagraph{plain(table1Description())});
+  t1.blocks.push_back(plainTable(table1Cells(report)));
+  t1.blocks.push_back(plots::HtmlParagraph{plain(revisitsDescription())});
+  t1.blocks.push_back(plainTable(revisitsCells(report)));
+  if (std::optional<plots::HtmlTable> oracle = oracleCells(report)) {
+    t1.blocks.push_back(plots::HtmlParagraph{plain(oracleDescription())});
+    t1.blocks.push_back(plainTable(*oracle));
+  }
+  plots::HtmlSection t2{"Table II: map types built", {}};
+  t2.blocks.push_back(plots::HtmlParagraph{plain(table2Description())});
+  t2.blocks.push_back(plainTable(table2Cells(report)));
+  plots::HtmlSection t3{"Table III: storage and update time of each map", {}};
+  t3.blocks.push_back(plots::HtmlParagraph{plain(table3Description())});
+  t3.blocks.push_back(plainTable(table3Cells(report)));
+  page.sections = {t1, t2, t3};
+
+  struct Kind {
+    const char* kind;
+    const char* title;
+  };
+  static constexpr Kind kKinds[] = {
+      {"rate", "Fig. 5: exploration rate against trajectory length"},
+      {"trajectories", "Fig. 6: trajectories of the methods"},
+      {"maps", "Fig. 7: the four maps of one run"},
+      {"revisits", "Room revisits"},
+  };
+  for (const Kind& k : kKinds) {
+    plots::HtmlSection section{k.title, {}};
+    for (const ReportFigure& f : figures) {
+      if (f.kind == k.kind) section.blocks.push_back(plots::htmlFigure(f.figure, f.caption));
+    }
+    if (!section.blocks.empty()) page.sections.push_back(std::move(section));
+  }
+  return page;
+}
+
+ReportOutput runReport(const std::vector<fs::path>& inputs, const fs::path& out,
+                       const ReportSettings& settings) {
+  ResultSet results = loadResults(inputs);
+  ReportOutput output;
+  output.episodes = results.episodes.size();
+  output.duplicates = results.duplicates;
+  output.truncated = results.truncated;
+  if (settings.oracle) {
+    OracleSummary oracle = attachOracleTours(results, {settings.threads});
+    output.notes = std::move(oracle.notes);
+  }
+  const Report report = buildReport(results);
+  output.files = writeReport(report, out);
+  ReportFigures figures;
+  if (settings.figures) {
+    figures = renderReportFigures(results, report);
+    for (std::string& n : figures.notes) output.notes.push_back(std::move(n));
+    for (fs::path& f : writeReportFigures(figures.figures, out / "figures"))
+      output.files.push_back(std::move(f));
+  }
+  plots::writeHtml(reportPage(report, figures.figures, output.notes), out / "report.html");
+  output.files.push_back(out / "report.html");
+  return output;
+}
+
+}  // namespace roomscout::experiment

@@ -1,0 +1,44 @@
+#pragma once
+// Everything `roomscout report` (and the end of `bench`) writes into its output folder: the
+// tables (report.hpp), the figures (report_figures.hpp) and report.html, one self-contained
+// page with all of them.
+
+#include <cstddef>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "roomscout/experiment/report.hpp"
+#include "roomscout/experiment/report_figures.hpp"
+#include "roomscout/plots/html_report.hpp"
+
+namespace roomscout::experiment {
+
+struct ReportSettings {
+  bool oracle = true;    ///< plan each world's oracle tour for Table I's L98 / oracle
+  bool figures = true;   ///< draw the figures (PNG + SVG, and on the page)
+  unsigned threads = 0;  ///< oracle tours planned at a time; 0: one per core
+};
+
+/// What a report wrote and what it wants to tell.
+struct ReportOutput {
+  std::vector<std::filesystem::path> files;  ///< every file written, tables first
+  std::vector<std::string> notes;            ///< worlds without oracle, figures left out
+  std::size_t episodes = 0;
+  std::size_t duplicates = 0;  ///< records dropped because their key came earlier
+  std::size_t truncated = 0;   ///< results files that ended in a truncated line
+};
+
+/// The HTML page of a report: Tables I (with revisits and oracle reference), II and III, then
+/// the figures by kind (Fig. 5, 6, 7, revisits); `notes` under the title.
+plots::HtmlPage reportPage(const Report& report, const std::vector<ReportFigure>& figures,
+                           const std::vector<std::string>& notes = {});
+
+/// Loads the results of `inputs` (loadResults), plans the oracle tours, and writes into `out`
+/// (created if needed): table1.md, table1.csv, table2.md, table3.md, figures/*.png + *.svg and
+/// report.html. Throws as loadResults for bad inputs and InputError when a file cannot be
+/// written.
+ReportOutput runReport(const std::vector<std::filesystem::path>& inputs,
+                       const std::filesystem::path& out, const ReportSettings& settings = {});
+
+}  // namespace roomscout::experiment

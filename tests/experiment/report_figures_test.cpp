@@ -1,0 +1,269 @@
+// The report's figures, oracle column and page: from hand-written results with curves
+// (data/results_curves.jsonl), from data/results_small.jsonl with the oracle tours of its
+// built-in worlds, and end to end from a short bench on a tiny map.
+
+#include "roomscout/experiment/report_figures.hpp"
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include <opencv2/imgcodecs.hpp>
+
+#include "roomscout/experiment/bench_runner.hpp"
+#include "roomscout/experiment/oracle_references.hpp"
+#include "roomscout/experiment/report.hpp"
+#include "roomscout/experiment/report_writer.hpp"
+#include "roomscout/io/atomic_file.hpp"
+
+namespace roomscout::experiment {
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path kData = fs::path(ROOMSCOUT_SOURCE_DIR) / "tests" / "experiment" / "data";
+
+class TempDir {
+ public:
+  TempDir() {
+    static std::atomic<int> counter{0};
+    path_ = fs::temp_directory_path() / ("roomscout_report_figures_" + std::to_string(::getpid()) +
+                                         "_" + std::to_string(counter.fetch_add(1)));
+    fs::remove_all(path_);
+    fs::create_directories(path_);
+  }
+  ~TempDir() {
+    std::error_code ec;
+    fs::remove_all(path_, ec);
+  }
+  TempDir(const TempDir&) = delete;
+  TempDir& operator=(const TempDir&) = delete;
+  fs::path operator/(const std::string& name) const { return path_ / name; }
+
+ private:
+  fs::path path_;
+};
+
+std::size_t count(const std::string& text, const std::string& part) {
+  std::size_t n = 0;
+  for (std::size_t at = text.find(part); at != std::string::npos; at = text.find(part, at + 1)) ++n;
+  return n;
+}
+
+bool contains(const std::string& text, const std::string& part) {
+  return text.find(part) != std::string::npos;
+}
+
+const ReportFigure* find(const ReportFigures& figures, const std::string& stem) {
+  for (const ReportFigure& f : figures.figures) {
+    if (f.stem == stem) return &f;
+  }
+  return nullptr;
+}
+
+std::string format(const char* spec, double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, spec, v);
+  return buf;
+}
+
+/// A map_server map: a 6 x 4 m room split by a wall with a 1 m door, as `dir`/rooms.yaml.
+fs::path writeTwoRoomMap(const fs::path& dir) {
+  fs::create_directories(dir);
+  const int w = 120, h = 80;
+  std::string pixels(static_cast<std::size_t>(w * h), static_cast<char>(254));
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) {
+      const bool wall =
+          y < 2 || y >= h - 2 || x < 2 || x >= w - 2 || (x >= 60 && x < 62 && !(y >= 30 && y < 50));
+      if (wall) pixels[static_cast<std::size_t>(y * w + x)] = 0;
+    }
+  }
+  std::ofstream(dir / "rooms.pgm", std::ios::binary) << "P5\n"
+                                                     << w << " " << h << "\n255\n"
+                                                     << pixels;
+  std::ofstream(dir / "rooms.yaml")
+      << "image: rooms.pgm\nresolution: 0.05\norigin: [0.0, 0.0, 0.0]\n"
+         "negate: 0\noccupied_thresh: 0.65\nfree_thresh: 0.196\n";
+  return dir / "rooms.yaml";
+}
+
+TEST(ReportFigures, RateCurvesShowTheMedianSeedAndGroupMeans) {
+  const ResultSet results = loadResults({kData / "results_curves.jsonl"});
+  const Report report = buildReport(results);
+  const ReportFigures figures = renderReportFigures(results, report);
+  // No run outputs: curves and revisits only.
+  std::vector<std::string> stems;
+  for (const ReportFigure& f : figures.figures) stems.push_back(f.stem);
+  EXPECT_EQ(stems, (std::vector<std::string>{"fig5_rate_small_house", "fig5_rate_he", "revisits"}));
+
+  const ReportFigure* world = find(figures, "fig5_rate_small_house");
+  ASSERT_NE(world, nullptr);
+  // rrt: L98 30, 20, 25 -> median seed 3; mmpf: never, 40 -> lower median seed 2.
+  EXPECT_TRUE(contains(world->figure.svg, "RRT, seed 3")) << world->figure.svg;
+  EXPECT_TRUE(contains(world->figure.svg, "MMPF, seed 2"));
+  EXPECT_EQ(count(world->figure.svg, "class=\"series\""), 2u);  // no oracle line
+  EXPECT_EQ(count(world->figure.svg, "class=\"reference\""), 1u);
+  EXPECT_EQ(world->figure.image.cols, 900);
+  EXPECT_EQ(world->figure.image.rows, 480);
+
+  const ReportFigure* group = find(figures, "fig5_rate_he");
+  ASSERT_NE(group, nullptr);
+  EXPECT_TRUE(contains(group->figure.svg, "he (2 worlds): mean exploration rate"));
+  EXPECT_TRUE(contains(group->figure.svg, "MMPF, 1 episode"));
+  EXPECT_TRUE(contains(group->figure.svg, "Nearest frontier (explore_lite), 2 episodes"));
+  EXPECT_TRUE(contains(group->figure.svg, "trajectory length [m]"));  // no oracle: metres
+
+  const ReportFigure* revisits = find(figures, "revisits");
+  ASSERT_NE(revisits, nullptr);
+  EXPECT_EQ(count(revisits->figure.svg, "class=\"bar\""), 4u);  // cells with episodes
+  EXPECT_TRUE(contains(revisits->figure.svg, "3.0"));           // rrt in small_house
+
+  TempDir dir;
+  const std::vector<fs::path> files = writeReportFigures(figures.figures, dir / "figures");
+  ASSERT_EQ(files.size(), 6u);
+  for (const fs::path& f : files) EXPECT_TRUE(fs::exists(f)) << f;
+  const cv::Mat png = cv::imread((dir / "figures" / "fig5_rate_small_house.png").string());
+  EXPECT_EQ(png.cols, 900);
+  EXPECT_EQ(png.rows, 480);
+}
+
+TEST(ReportOracle, TableIHasTheOracleColumnDeterministically) {
+  ResultSet results = loadResults({kData / "results_small.jsonl"});
+  const OracleSummary summary = attachOracleTours(results, {2});
+  // small_house and medium_house are built in (no world_source needed); the houseexpo records
+  // name no world file.
+  EXPECT_EQ(summary.planned, 2u);
+  EXPECT_TRUE(summary.notes.empty());
+  for (const EpisodeSummary& e : results.episodes) {
+    if (e.world_group == "builtin") {
+      ASSERT_TRUE(e.oracle) << e.key.text();
+      EXPECT_GT(e.oracle->length_m, 10.0);
+      EXPECT_GT(e.oracle->coverage, 0.9);
+      EXPECT_GT(e.oracle->viewpoints, 0u);
+    } else {
+      EXPECT_FALSE(e.oracle) << e.key.text();
+    }
+  }
+  const Report report = buildReport(results);
+  ASSERT_TRUE(report.hasOracle());
+  const double oracle_m = report.oracle.at("small_house").length_m.mean;
+  EXPECT_EQ(report.oracle.count("houseexpo"), 0u);
+  const MethodStats& rrt = report.table1.at({"small_house", "rrt"});
+  EXPECT_EQ(rrt.l98_oracle_ratio.n, 3u);
+  EXPECT_NEAR(rrt.l98_oracle_ratio.mean, 22.0 / oracle_m, 1e-12);
+
+  const std::string md = table1Markdown(report);
+  EXPECT_TRUE(contains(md, "small_house L98 / oracle")) << md;
+  EXPECT_TRUE(contains(md, "| 22.0 ± 2.0 | 31 | " + format("%.2f", 22.0 / oracle_m) + "× | 3/3"))
+      << md;
+  EXPECT_TRUE(contains(md, "## Oracle reference")) << md;
+  EXPECT_TRUE(contains(md, "| small_house | 1/1 | " + format("%.1f", oracle_m) + " |")) << md;
+  EXPECT_TRUE(contains(md, "| houseexpo (3 worlds) | 0/3 | – |")) << md;
+  const std::string csv = table1Csv(report);
+  EXPECT_TRUE(contains(csv, ",oracle_worlds,oracle_l_mean_m,")) << csv;
+
+  // The same inputs give the same tables.
+  ResultSet again = loadResults({kData / "results_small.jsonl"});
+  attachOracleTours(again, {1});
+  const Report report2 = buildReport(again);
+  EXPECT_EQ(table1Csv(report2), csv);
+  EXPECT_EQ(table1Markdown(report2), md);
+}
+
+TEST(ReportOracle, AWorldThatDoesNotLoadIsANoteNotAnError) {
+  TempDir dir;
+  std::ofstream(dir / "results.jsonl")
+      << R"({"world": "gone", "world_group": "maps", "world_source": "/nonexistent/gone.yaml", )"
+      << R"("method": "mmpf", "seed": 1, "exploration_rate": 0.99, "l98_m": 5.0})"
+      << "\n";
+  ResultSet results = loadResults({dir / "results.jsonl"});
+  const OracleSummary summary = attachOracleTours(results);
+  ASSERT_EQ(summary.notes.size(), 1u);
+  EXPECT_TRUE(contains(summary.notes[0], "/nonexistent/gone.yaml")) << summary.notes[0];
+  EXPECT_FALSE(results.episodes[0].oracle);
+  EXPECT_FALSE(buildReport(results).hasOracle());
+}
+
+TEST(ReportWriter, WritesTablesFiguresAndPageFromABench) {
+  TempDir dir;
+  const fs::path world = writeTwoRoomMap(dir / "tiny");
+  BenchOptions bench;
+  bench.worlds = {world.string()};
+  bench.methods = {"nearest_frontier", "mmpf"};
+  bench.seeds = 2;
+  bench.jobs = 2;
+  bench.out = dir / "bench";
+  bench.settings.max_time_s = 60.0;
+  runBench(bench);
+
+  const ReportOutput output = runReport({dir / "bench"}, dir / "report");
+  EXPECT_EQ(output.episodes, 4u);
+  EXPECT_TRUE(output.notes.empty()) << output.notes.front();
+  const fs::path figures = dir / "report" / "figures";
+  for (const char* stem :
+       {"fig5_rate_rooms", "fig6_trajectories_rooms", "fig7_maps_rooms", "revisits"}) {
+    for (const char* ext : {".png", ".svg"}) {
+      const fs::path f = figures / (std::string(stem) + ext);
+      EXPECT_NE(std::find(output.files.begin(), output.files.end(), f), output.files.end()) << f;
+      EXPECT_TRUE(fs::exists(f)) << f;
+    }
+  }
+  for (const char* f : {"table1.md", "table1.csv", "table2.md", "table3.md", "report.html"})
+    EXPECT_TRUE(fs::exists(dir / "report" / f)) << f;
+
+  // Sizes: charts as laid out, map figures 1200 px wide and as tall as their maps need.
+  const cv::Mat rate = cv::imread((figures / "fig5_rate_rooms.png").string());
+  EXPECT_EQ(rate.cols, 900);
+  EXPECT_EQ(rate.rows, 480);
+  const cv::Mat trajectories = cv::imread((figures / "fig6_trajectories_rooms.png").string());
+  EXPECT_EQ(trajectories.cols, 1200);
+  EXPECT_GT(trajectories.rows, 200);
+  EXPECT_LT(trajectories.rows, 1200);
+  const cv::Mat maps = cv::imread((figures / "fig7_maps_rooms.png").string());
+  EXPECT_EQ(maps.cols, 1200);
+  EXPECT_GT(maps.rows, 300);
+
+  const std::string rate_svg = io::readFile(figures / "fig5_rate_rooms.svg");
+  const std::string trajectories_svg = io::readFile(figures / "fig6_trajectories_rooms.svg");
+  const std::string maps_svg = io::readFile(figures / "fig7_maps_rooms.svg");
+  for (const char* method : {"MMPF", "Nearest frontier (explore_lite)"}) {
+    EXPECT_TRUE(contains(rate_svg, method)) << method;
+    EXPECT_TRUE(contains(trajectories_svg, method)) << method;
+  }
+  EXPECT_TRUE(contains(rate_svg, "oracle tour"));
+  EXPECT_EQ(count(trajectories_svg, "class=\"track\""), 2u);
+  EXPECT_EQ(count(trajectories_svg, "<image "), 2u);
+  EXPECT_EQ(count(maps_svg, "<image "), 4u);
+  EXPECT_TRUE(contains(maps_svg, "MMPF, seed 1"));  // no "semantic" run: the first method's
+
+  // The page holds every table and every figure, inline.
+  const std::string html = io::readFile(dir / "report" / "report.html");
+  EXPECT_EQ(count(html, "<table class=\"report-table\">"), 5u);  // I, revisits, oracle, II, III
+  EXPECT_EQ(count(html, "<figure class=\"report-figure\">"), 4u);
+  for (const char* part :
+       {"Table I: exploration time", "Revisits", "Oracle reference", "Table II: map types",
+        "Table III: storage", "Fig. 5, rooms", "Fig. 6, rooms", "Fig. 7, rooms",
+        "Room revisits per method", "tiny (1 world) L98 / oracle"}) {
+    EXPECT_TRUE(contains(html, part)) << part;
+  }
+  EXPECT_TRUE(contains(html, rate_svg.substr(rate_svg.find("<svg"), 200)));
+  EXPECT_FALSE(contains(html, "src=\"http")) << "self-contained";
+
+  // Deterministic: a second report writes the same tables and figure drawings.
+  runReport({dir / "bench"}, dir / "report2");
+  EXPECT_EQ(io::readFile(dir / "report2" / "table1.csv"),
+            io::readFile(dir / "report" / "table1.csv"));
+  EXPECT_EQ(io::readFile(dir / "report2" / "figures" / "fig6_trajectories_rooms.svg"),
+            trajectories_svg);
+}
+
+}  // namespace
+}  // namespace roomscout::experiment

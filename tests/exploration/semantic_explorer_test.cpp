@@ -1,0 +1,178 @@
+// The paper's semantic-region-aware strategy: its sampling law, where P_sem comes from, the
+// sign of the room reward, and the behaviour it exists for (finish the room you are in).
+
+#include "roomscout/exploration/semantic_explorer.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <opencv2/core.hpp>
+
+#include "roomscout/exploration/strategy_registry.hpp"
+#include "roomscout/maps/semantic_map.hpp"
+#include "roomscout/sim/analysis_maps_observer.hpp"
+#include "roomscout/sim/episode.hpp"
+#include "roomscout/sim/exploration_truth.hpp"
+
+namespace roomscout {
+namespace {
+
+/// A 10 x 6 m grid: x < 5 m is room 1, x >= 5 m room 2; known free for y < 3 m, unknown above.
+struct TwoRoomGrid {
+  OccupancyGrid grid{GridGeometry({0.0, 0.0}, 0.05, 200, 120)};
+  Costmap costmap;
+  SemanticMap semantic;
+  TwoRoomGrid() {
+    const GridGeometry& g = grid.geometry();
+    cv::Mat labels(g.height(), g.width(), CV_32S, cv::Scalar(0));
+    for (int y = 0; y < g.height(); ++y) {
+      for (int x = 0; x < g.width(); ++x) {
+        const bool known = y < 60;
+        grid.setState(g.index(Cell{x, y}), known ? CellState::kFree : CellState::kUnknown);
+        if (known) labels.at<int>(y, x) = x < 100 ? 1 : 2;
+      }
+    }
+    costmap.update(grid);
+    semantic.update(g, labels, cv::Mat());
+  }
+};
+
+TEST(SemanticExplorerTest, SamplingProbabilityFollowsKtOverOnePlusKt) {
+  EXPECT_DOUBLE_EQ(semanticSampleProbability(0.1, 0.0), 0.0);
+  EXPECT_DOUBLE_EQ(semanticSampleProbability(0.1, 10.0), 0.5);
+  EXPECT_NEAR(semanticSampleProbability(0.5, 6.0), 0.75, 1e-12);
+  EXPECT_DOUBLE_EQ(semanticSampleProbability(0.0, 100.0), 0.0);
+
+  // The strategy's own draws, with a fixed seed: the robot sits in room 1 for t seconds; the
+  // share of P_sem draws in the next second must match k t / (1 + k t) within 4 sigma.
+  for (const double t : {5.0, 20.0, 60.0}) {
+    TwoRoomGrid w;
+    SemanticExplorerOptions o;
+    o.k = 0.1;
+    o.iterations_per_s = 20000.0;
+    SemanticExplorer s(7, o);
+    const Pose2 robot{2.0, 1.0, 0.0};
+    s.decide({w.grid, w.costmap, robot, 0.0, &w.semantic});
+    s.decide({w.grid, w.costmap, robot, t, &w.semantic});  // grows t * 20000 iterations
+    const long sem0 = s.semanticDraws(), rad0 = s.randomDraws();
+    s.decide({w.grid, w.costmap, robot, t + 1.0, &w.semantic});
+    const double n = static_cast<double>((s.semanticDraws() - sem0) + (s.randomDraws() - rad0));
+    ASSERT_GT(n, 10000.0);
+    // The probability in force during the last call is that of its t (time in the room).
+    const double p = semanticSampleProbability(o.k, t + 1.0);
+    const double share = static_cast<double>(s.semanticDraws() - sem0) / n;
+    EXPECT_NEAR(share, p, 4.0 * std::sqrt(p * (1.0 - p) / n)) << "t = " << t;
+  }
+}
+
+TEST(SemanticExplorerTest, SemanticPointsLieOnTheFrontierOfTheCurrentRoom) {
+  TwoRoomGrid w;
+  SemanticExplorer s(3);
+  s.decide({w.grid, w.costmap, Pose2{2.0, 1.0, 0.0}, 0.0, &w.semantic});
+  EXPECT_EQ(s.currentRoom(), 1);
+  ASSERT_FALSE(s.semanticCandidates().empty());
+  const GridGeometry& g = w.grid.geometry();
+  for (const Vec2& p : s.semanticCandidates()) {
+    const Cell c = g.cellOf(p);
+    EXPECT_TRUE(w.grid.isFree(g.index(c)));
+    EXPECT_EQ(w.semantic.roomAt(p), 1) << p.transpose();
+    const bool next_to_unknown = w.grid.isUnknown(g.index(Cell{c.x + 1, c.y})) ||
+                                 w.grid.isUnknown(g.index(Cell{c.x - 1, c.y})) ||
+                                 w.grid.isUnknown(g.index(Cell{c.x, c.y + 1})) ||
+                                 w.grid.isUnknown(g.index(Cell{c.x, c.y - 1}));
+    EXPECT_TRUE(next_to_unknown) << p.transpose();
+  }
+  // In room 2 the candidates move there.
+  SemanticExplorer s2(3);
+  s2.decide({w.grid, w.costmap, Pose2{8.0, 1.0, 0.0}, 0.0, &w.semantic});
+  EXPECT_EQ(s2.currentRoom(), 2);
+  for (const Vec2& p : s2.semanticCandidates()) EXPECT_EQ(w.semantic.roomAt(p), 2);
+}
+
+TEST(SemanticExplorerTest, RoomRewardFlipsSignWithMembership) {
+  SemanticExplorerOptions o;
+  o.gain_weight = 2.0;
+  o.cost_weight = 0.5;
+  o.room_reward = 4.0;
+  const SemanticExplorer s(1, o);
+  EXPECT_DOUBLE_EQ(s.score(3.0, 2.0, true), 2.0 * 3.0 - 0.5 * 2.0 + 4.0);
+  EXPECT_DOUBLE_EQ(s.score(3.0, 2.0, false), 2.0 * 3.0 - 0.5 * 2.0 - 4.0);
+  EXPECT_DOUBLE_EQ(s.score(3.0, 2.0, true) - s.score(3.0, 2.0, false), 2.0 * o.room_reward);
+}
+
+TEST(SemanticExplorerTest, AblationsAreRegisteredWithTheirDefaults) {
+  auto sampling = createStrategy("semantic_sampling_only", 1);
+  auto scoring = createStrategy("semantic_score_only", 1);
+  auto value = [](ExplorationStrategy& s, std::string_view name) {
+    for (const ParameterRef& p : s.parameters()) {
+      if (p.name == name) return *std::get<double*>(p.value);
+    }
+    return -1.0;
+  };
+  EXPECT_EQ(value(*sampling, "room_reward"), 0.0);
+  EXPECT_GT(value(*sampling, "k"), 0.0);
+  EXPECT_EQ(value(*scoring, "k"), 0.0);
+  EXPECT_GT(value(*scoring, "room_reward"), 0.0);
+}
+
+/// A west room with a hidden alcove and a door, near the start, to a large east room: does the
+/// robot see the west room (alcove included) before it first enters the east room?
+sim::World alcoveAndHall() {
+  sim::World w;
+  w.name = "alcove_and_hall";
+  w.source = "test:alcove_and_hall";
+  const double t = 0.2;
+  w.walls = {{{0, 0}, {20, 0}, t, 0, 2.5},   {{20, 0}, {20, 8}, t, 0, 2.5}, {{20, 8}, {0, 8}, t, 0, 2.5},
+             {{0, 8}, {0, 0}, t, 0, 2.5},    {{10, 0}, {10, 0.6}, t, 0, 2.5}, {{10, 1.6}, {10, 8}, t, 0, 2.5},
+             {{3.5, 3.0}, {3.5, 8}, t, 0, 2.5}, {{0, 3.0}, {2.3, 3.0}, t, 0, 2.5}};
+  w.doors = {{{10, 1.1}, 1.0}};
+  w.rooms = {{1, "west", {{0, 0}, {10, 0}, {10, 8}, {0, 8}}}, {2, "east", {{10, 0}, {20, 0}, {20, 8}, {10, 8}}}};
+  w.start = {8.5, 1.2, 0.0};
+  w.start_given = true;
+  return w;
+}
+
+/// Fraction of the west room's reachable cells known when the robot first enters the east room.
+double westKnownOnLeaving(const std::string& method, std::uint64_t seed) {
+  const sim::World world = alcoveAndHall();
+  sim::EpisodeConfig config;
+  config.resolve();
+  config.episode.max_time_s = 900.0;
+  const sim::WorldModel model(world, config.world);
+  const GridGeometry geometry = sim::mapGeometryFor(model, config.mapping.resolution_m);
+  const sim::ExplorationTruth truth(model, geometry, config.costmap.lethalRadius_m());
+  struct Probe final : sim::EpisodeObserver {
+    const sim::ExplorationTruth* truth = nullptr;
+    double fraction = -1.0;
+    std::vector<double> times;
+    std::string_view name() const override { return "probe"; }
+    void onStep(const sim::EpisodeSnapshot& s) override {
+      if (fraction >= 0.0 || s.robot.x_m < 10.3) return;
+      int known = 0, all = 0;
+      for (const std::uint32_t i : truth->reachableCells()) {
+        if (s.grid.geometry().centerOf(s.grid.geometry().cellAt(i)).x() >= 9.9) continue;
+        ++all;
+        known += s.grid.isUnknown(i) ? 0 : 1;
+      }
+      fraction = static_cast<double>(known) / all;
+    }
+    void onFinish(const sim::EpisodeSnapshot&) override {}
+    const std::vector<double>& updateTimes_ms() const override { return times; }
+  } probe;
+  probe.truth = &truth;
+  sim::AnalysisMapsObserver semantic(sim::AnalysisMapKind::kSemantic);
+  auto strategy = createStrategy(method, seed);
+  const sim::EpisodeResult r = sim::runEpisode(model, config, *strategy, seed, {}, {&semantic, &probe});
+  EXPECT_GE(r.exploration_rate, 0.98) << method;
+  return probe.fraction;
+}
+
+TEST(SemanticExplorerTest, FinishesTheFirstRoomBeforeEnteringTheSecondWhereRrtDoesNot) {
+  const double semantic = westKnownOnLeaving("semantic", 1);
+  const double rrt = westKnownOnLeaving("rrt", 1);
+  EXPECT_GE(semantic, 0.95) << "semantic left the west room with " << semantic * 100 << " % of it known";
+  EXPECT_LT(rrt, 0.9) << "rrt left the west room with " << rrt * 100 << " % of it known";
+}
+
+}  // namespace
+}  // namespace roomscout
