@@ -1,6 +1,8 @@
 #include "roomscout/mapping/point_cloud_map.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <iterator>
 
 #include "roomscout/core/errors.hpp"
 
@@ -77,35 +79,64 @@ std::size_t PointCloudMap::insert(const std::vector<Eigen::Vector3f>& points_map
   const std::size_t before = counts_.size();
   const float voxel = static_cast<float>(options_.voxel_size_m);
   const float limit = static_cast<float>(kBias - 1);
-  for (const Eigen::Vector3f& p : points_map) {
-    const Eigen::Vector3f q = p * inv_voxel_;
-    if (!q.allFinite() || q.cwiseAbs().maxCoeff() >= limit) continue;
-    const std::int64_t ix = static_cast<std::int64_t>(std::floor(q.x()));
-    const std::int64_t iy = static_cast<std::int64_t>(std::floor(q.y()));
-    const std::int64_t iz = static_cast<std::int64_t>(std::floor(q.z()));
-    const std::uint64_t key = pack(ix, iy, iz);
-    std::size_t slot = slotOf(key);
+  // First the voxel key of every point (kEmpty: skipped), so that the hash slots of points a
+  // few ahead can be prefetched: on a large map nearly every probe misses the cache.
+  std::vector<std::uint64_t>& keys = scratch_keys_;
+  keys.resize(points_map.size());
+  for (std::size_t i = 0; i < points_map.size(); ++i) {
+    const Eigen::Vector3f q = points_map[i] * inv_voxel_;
+    if (!q.allFinite() || q.cwiseAbs().maxCoeff() >= limit) {
+      keys[i] = kEmpty;
+      continue;
+    }
+    keys[i] = pack(static_cast<std::int64_t>(std::floor(q.x())), static_cast<std::int64_t>(std::floor(q.y())),
+                   static_cast<std::int64_t>(std::floor(q.z())));
+  }
+  // Consecutive points of a revolution often share a voxel (neighbouring beams of one ring):
+  // a small direct-mapped cache of key -> voxel skips their probes. Voxel indices never
+  // change, so the cache only saves time; the sums are added in the same order as without it.
+  constexpr int kRecent = 64;
+  std::uint64_t recent_key[kRecent];
+  std::uint32_t recent_voxel[kRecent];
+  std::fill(std::begin(recent_key), std::end(recent_key), kEmpty);
+  constexpr std::size_t kPrefetchAhead = 12;
+  for (std::size_t i = 0; i < keys.size(); ++i) {
+    if (i + kPrefetchAhead < keys.size() && keys[i + kPrefetchAhead] != kEmpty) {
+      const std::size_t ahead = mix(keys[i + kPrefetchAhead]) & mask_;
+      __builtin_prefetch(keys_.data() + ahead);
+      __builtin_prefetch(slot_voxel_.data() + ahead);
+    }
+    const std::uint64_t key = keys[i];
+    if (key == kEmpty) continue;
+    const int r = static_cast<int>((key ^ (key >> kBits) ^ (key >> (2 * kBits))) & (kRecent - 1));
     std::uint32_t v;
-    if (keys_[slot] == key) {
-      v = slot_voxel_[slot];
+    if (recent_key[r] == key) {
+      v = recent_voxel[r];
     } else {
-      if (counts_.size() >= static_cast<std::size_t>(options_.max_points)) {
-        ++dropped_;
-        continue;
+      std::size_t slot = slotOf(key);
+      if (keys_[slot] == key) {
+        v = slot_voxel_[slot];
+      } else {
+        if (counts_.size() >= static_cast<std::size_t>(options_.max_points)) {
+          ++dropped_;
+          continue;
+        }
+        if ((counts_.size() + 1) * 2 > keys_.size()) {
+          grow();
+          slot = slotOf(key);
+        }
+        v = static_cast<std::uint32_t>(counts_.size());
+        keys_[slot] = key;
+        slot_voxel_[slot] = v;
+        voxel_keys_.push_back(key);
+        sums_.push_back(Eigen::Vector3f::Zero());
+        counts_.push_back(0);
       }
-      if ((counts_.size() + 1) * 2 > keys_.size()) {
-        grow();
-        slot = slotOf(key);
-      }
-      v = static_cast<std::uint32_t>(counts_.size());
-      keys_[slot] = key;
-      slot_voxel_[slot] = v;
-      voxel_keys_.push_back(key);
-      sums_.push_back(Eigen::Vector3f::Zero());
-      counts_.push_back(0);
+      recent_key[r] = key;
+      recent_voxel[r] = v;
     }
     // Sums relative to the voxel centre keep float precision far from the origin.
-    sums_[v] += p - voxelCentre(key, voxel);
+    sums_[v] += points_map[i] - voxelCentre(key, voxel);
     ++counts_[v];
   }
   return counts_.size() - before;

@@ -59,6 +59,7 @@ class PointCloudMap {
   std::vector<std::uint32_t> counts_;    ///< per voxel: number of points
   std::vector<std::uint64_t> voxel_keys_;  ///< per voxel: its packed index
   std::size_t dropped_ = 0;
+  std::vector<std::uint64_t> scratch_keys_;  ///< insert(): voxel keys of the batch (not map data)
 };
 
 }  // namespace roomscout

@@ -10,6 +10,12 @@ namespace roomscout::maps {
 
 /// One CellState value per cell (CV_8U), row y = grid row y.
 cv::Mat stateImage(const OccupancyGrid& grid);
+/// The same into `image`, reusing its buffer when it already has the grid's size.
+void stateImage(const OccupancyGrid& grid, cv::Mat& image);
+
+/// Number of cells the grid knows (free or occupied): the same as counting
+/// `grid.state(i) != CellState::kUnknown`, several times faster.
+std::size_t knownCellCount(const OccupancyGrid& grid);
 
 /// The smallest rectangle holding every known (free or occupied) cell, grown by `margin`
 /// cells and clipped to the image; empty when nothing is known. Analysis runs on this crop:

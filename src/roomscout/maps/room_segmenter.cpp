@@ -6,6 +6,9 @@
 #include <numeric>
 
 #include <opencv2/imgproc.hpp>
+#include <cstring>
+#include <cstdio>
+#include "roomscout/maps/distance_transform.hpp"
 
 #include "roomscout/core/errors.hpp"
 #include "roomscout/maps/grid_image.hpp"
@@ -128,6 +131,13 @@ int segmentKnown(const RoomSegmenterOptions& options, const cv::Mat& states, dou
            std::max(1, static_cast<int>(std::lround(options.jamb_min_length_m / resolution_m))),
            std::max(1, static_cast<int>(std::lround(options.wall_max_thickness_m / resolution_m))));
   cv::distanceTransform(s.cut_space, s.dist, cv::DIST_L2, cv::DIST_MASK_PRECISE, CV_32F);
+
+  {  // TEMP equality check
+    cv::Mat mine;
+    maps::distanceTransformL2(s.cut_space, mine);
+    if (cv::norm(mine != s.dist, cv::NORM_L1) != 0 || std::memcmp(mine.data, s.dist.data, mine.total() * 4) != 0) { std::fprintf(stderr, "EDT MISMATCH\n"); std::abort(); }
+    static int checks = 0; if (++checks % 100 == 0) std::fprintf(stderr, "edt checks %d\n", checks);
+  }
 
   const int w = space.cols;
   const int n = space.rows * space.cols;

@@ -4,6 +4,9 @@
 #include <cmath>
 
 #include <opencv2/imgproc.hpp>
+#include <cstring>
+#include <cstdio>
+#include "roomscout/maps/distance_transform.hpp"
 
 #include "roomscout/core/errors.hpp"
 #include "roomscout/maps/grid_image.hpp"
@@ -116,6 +119,13 @@ TopologicalMap TopologyBuilder::build(const cv::Mat& states, const GridGeometry&
   cv::copyMakeBorder(space, space, 1, 1, 1, 1, cv::BORDER_CONSTANT, 0);
   cv::Mat clearance;
   cv::distanceTransform(space, clearance, cv::DIST_L2, cv::DIST_MASK_PRECISE, CV_32F);
+
+  {  // TEMP equality check
+    cv::Mat mine;
+    maps::distanceTransformL2(space, mine);
+    if (cv::norm(mine != clearance, cv::NORM_L1) != 0 || std::memcmp(mine.data, clearance.data, mine.total() * 4) != 0) { std::fprintf(stderr, "EDT MISMATCH\n"); std::abort(); }
+    static int checks = 0; if (++checks % 100 == 0) std::fprintf(stderr, "edt checks %d\n", checks);
+  }
 
   // 2. Skeleton.
   const cv::Mat skel = maps::thinZhangSuen(space);

@@ -40,17 +40,6 @@ const SemanticMap* AnalysisMapsObserver::semanticMap() const {
   return kind_ == AnalysisMapKind::kSemantic ? &semantic_ : nullptr;
 }
 
-namespace {
-
-std::size_t knownCells(const OccupancyGrid& grid) {
-  std::size_t known = 0;
-  const std::size_t n = grid.geometry().cellCount();
-  for (std::size_t i = 0; i < n; ++i) known += grid.isUnknown(i) ? 0 : 1;
-  return known;
-}
-
-}  // namespace
-
 void AnalysisMapsObserver::onStep(const EpisodeSnapshot& snapshot) {
   changed_ = changed_ || snapshot.grid_changed;
   if (kind_ == AnalysisMapKind::kTopological && rooms_ != nullptr) {
@@ -64,7 +53,7 @@ void AnalysisMapsObserver::onStep(const EpisodeSnapshot& snapshot) {
   }
   if (snapshot.time_s + 1e-9 < next_update_s_ || !changed_) return;
   next_update_s_ = snapshot.time_s + options_.period_s;
-  const std::size_t known = knownCells(snapshot.grid);
+  const std::size_t known = maps::knownCellCount(snapshot.grid);
   const double res = snapshot.grid.geometry().resolution_m();
   const double new_area_m2 =
       std::abs(static_cast<double>(known) - static_cast<double>(known_at_update_)) * res * res;
@@ -79,7 +68,8 @@ void AnalysisMapsObserver::onFinish(const EpisodeSnapshot& snapshot) {
 
 void AnalysisMapsObserver::update(const OccupancyGrid& grid) {
   const auto t0 = std::chrono::steady_clock::now();
-  const cv::Mat states = maps::stateImage(grid);
+  maps::stateImage(grid, states_);
+  const cv::Mat& states = states_;
   if (kind_ == AnalysisMapKind::kSemantic) {
     const RoomSegmentation seg = segmenter_.segment(states, grid.geometry().resolution_m());
     semantic_.update(grid.geometry(), seg.labels, states);

@@ -56,6 +56,7 @@ class AnalysisMapsObserver final : public EpisodeObserver {
   TopologyBuilder builder_;
   SemanticMap semantic_;
   TopologicalMap topology_;
+  cv::Mat states_;  ///< the grid's cell states at the last update (buffer reused)
   std::vector<double> update_ms_;
   double next_update_s_ = 0.0;
   bool changed_ = false;

@@ -54,6 +54,11 @@ LidarSimulator::LidarSimulator(const ColumnWorld& world, const LidarOptions& opt
                                (options_.elevation_max_deg - options_.elevation_min_deg) * k / (options_.num_rings - 1);
     elevations_rad_.push_back(e * deg);
   }
+  const std::size_t cells = world_.geometry().cellCount();
+  empty_columns_.assign(cells / 64 + 1, 0);
+  for (std::size_t i = 0; i < cells; ++i) {
+    if (world_.columnEmpty(i)) empty_columns_[i >> 6] |= std::uint64_t{1} << (i & 63);
+  }
   const int n_columns = std::max(1, static_cast<int>(std::lround(360.0 / options_.azimuth_step_deg)));
   for (int c = 0; c < n_columns; ++c) {
     const double a = 2.0 * M_PI * c / n_columns;
@@ -103,7 +108,10 @@ void LidarSimulator::castColumn(const Eigen::Vector2d& origin_m, double z_m, dou
   const int n = static_cast<int>(rings.size());
   for (int k = 0; k < n; ++k) hit_t_m[k] = -1.0;
   std::uint64_t active = n == 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << n) - 1;
-  std::size_t next_limit = 0;  // rings retire at their plane/range limit in this order
+  const double inf = std::numeric_limits<double>::infinity();
+  // Rings retire at their plane/range limit in `order`; next_limit_m is the next such limit.
+  std::size_t next_limit = 0;
+  double next_limit_m = order.empty() ? inf : rings[order[0]].limit_m;
   auto retireUpTo = [&](double t_m) {
     while (next_limit < order.size() && rings[order[next_limit]].limit_m <= t_m) {
       const int k = order[next_limit++];
@@ -116,7 +124,12 @@ void LidarSimulator::castColumn(const Eigen::Vector2d& origin_m, double z_m, dou
         hit_surface[k] = rings[k].plane_surface;
       }
     }
+    next_limit_m = next_limit < order.size() ? rings[order[next_limit]].limit_m : inf;
   };
+  // Rings in increasing slope (their index order for a scan): the lowest and highest active
+  // ring bound the heights all active rings reach in a cell.
+  bool slopes_sorted = true;
+  for (int k = 1; k < n; ++k) slopes_sorted = slopes_sorted && rings[k - 1].slope <= rings[k].slope;
 
   const GridGeometry& g = world_.geometry();
   const double res = g.resolution_m();
@@ -124,7 +137,6 @@ void LidarSimulator::castColumn(const Eigen::Vector2d& origin_m, double z_m, dou
   int x = static_cast<int>(std::floor(p.x()));
   int y = static_cast<int>(std::floor(p.y()));
   const int w = g.width(), h = g.height();
-  const double inf = std::numeric_limits<double>::infinity();
   const int step_x = cos_az > 0 ? 1 : -1;
   const int step_y = sin_az > 0 ? 1 : -1;
   // DDA parameter in raster cells along the unit horizontal direction.
@@ -133,19 +145,53 @@ void LidarSimulator::castColumn(const Eigen::Vector2d& origin_m, double z_m, dou
   double t_max_x = cos_az != 0 ? (step_x > 0 ? (x + 1 - p.x()) : (p.x() - x)) * t_delta_x : inf;
   double t_max_y = sin_az != 0 ? (step_y > 0 ? (y + 1 - p.y()) : (p.y() - y)) * t_delta_y : inf;
   double t_in = 0.0;
-  while (active && x >= 0 && y >= 0 && x < w && y < h) {
-    const double t_out = std::min(t_max_x, t_max_y);
-    const double t_in_m = t_in * res, t_out_m = t_out * res;
-    const std::size_t cell = static_cast<std::size_t>(y) * w + x;
-    if (!world_.columnEmpty(cell)) {
-      const auto spans = world_.intervals(cell);
-      for (std::uint64_t bits = active; bits;) {
+  const std::ptrdiff_t cell_step_y = static_cast<std::ptrdiff_t>(step_y) * w;
+  std::ptrdiff_t cell = static_cast<std::ptrdiff_t>(y) * w + x;
+  const std::uint64_t* empty = empty_columns_.data();
+  // Margin of the test that skips a cell no active ring can hit: far above the rounding of
+  // the heights compared (1e-15 m), far below any geometry, so only cells that cannot give a
+  // hit are skipped and every hit is computed exactly as without the test.
+  constexpr double kSkipMargin_m = 1e-6;
+  while (active && static_cast<unsigned>(x) < static_cast<unsigned>(w) &&
+         static_cast<unsigned>(y) < static_cast<unsigned>(h)) {
+    // Branch-free step selection: the x/y choice is data-dependent and mispredicts often.
+    const bool along_x = t_max_x < t_max_y;
+    const double t_out = along_x ? t_max_x : t_max_y;
+    const double t_out_m = t_out * res;
+    if (!((empty[cell >> 6] >> (cell & 63)) & 1)) {
+      const double t_in_m = t_in * res;
+      const auto spans = world_.intervals(static_cast<std::size_t>(cell));
+      // Heights the active rings span in this cell (conservative: over [t_in_m, t_out_m]).
+      double z_lo = inf, z_hi = -inf;
+      if (slopes_sorted) {
+        const double lo = rings[std::countr_zero(active)].slope, hi = rings[63 - std::countl_zero(active)].slope;
+        z_lo = z_m + std::min(lo * t_in_m, lo * t_out_m);
+        z_hi = z_m + std::max(hi * t_in_m, hi * t_out_m);
+      } else {
+        for (std::uint64_t bits = active; bits; bits &= bits - 1) {
+          const double sl = rings[std::countr_zero(bits)].slope;
+          z_lo = std::min(z_lo, z_m + std::min(sl * t_in_m, sl * t_out_m));
+          z_hi = std::max(z_hi, z_m + std::max(sl * t_in_m, sl * t_out_m));
+        }
+      }
+      bool reachable = false;
+      for (const ZInterval& s : spans) {
+        reachable = reachable || (s.z_min_m <= z_hi + kSkipMargin_m && s.z_max_m >= z_lo - kSkipMargin_m);
+      }
+      for (std::uint64_t bits = reachable ? active : 0; bits;) {
         const int k = std::countr_zero(bits);
         bits &= bits - 1;
         const Ring& r = rings[k];
         const double t_end = std::min(t_out_m, r.limit_m);
         if (t_in_m > t_end) continue;
         const double z_in = z_m + r.slope * t_in_m;
+        // Heights this ring spans in the cell: a span outside them (with the same margin as
+        // above) gives no hit, so the exact test below runs only where one is possible.
+        const double z_end = z_m + r.slope * t_end;
+        const double ring_lo = std::min(z_in, z_end) - kSkipMargin_m, ring_hi = std::max(z_in, z_end) + kSkipMargin_m;
+        bool near = false;
+        for (const ZInterval& s : spans) near = near || (s.z_min_m <= ring_hi && s.z_max_m >= ring_lo);
+        if (!near) continue;
         double t_hit = inf, dz_hit = 0.0;
         for (const ZInterval& s : spans) {
           if (s.z_min_m <= z_in && z_in <= s.z_max_m) {
@@ -169,14 +215,12 @@ void LidarSimulator::castColumn(const Eigen::Vector2d& origin_m, double z_m, dou
         }
       }
     }
-    retireUpTo(t_out_m);
-    if (t_max_x < t_max_y) {
-      t_max_x += t_delta_x;
-      x += step_x;
-    } else {
-      t_max_y += t_delta_y;
-      y += step_y;
-    }
+    if (t_out_m >= next_limit_m) retireUpTo(t_out_m);
+    t_max_x += along_x ? t_delta_x : 0.0;
+    t_max_y += along_x ? 0.0 : t_delta_y;
+    x += along_x ? step_x : 0;
+    y += along_x ? 0 : step_y;
+    cell += along_x ? step_x : cell_step_y;
     t_in = t_out;
   }
   // Beyond the raster there is neither floor nor ceiling: remaining rings have no return.
