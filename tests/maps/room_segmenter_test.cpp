@@ -70,6 +70,23 @@ TEST(RoomSegmenter, EmptyAndAllObstacleMaps) {
   EXPECT_EQ(RoomSegmenter().segment(canvas(3, 3), 0.05).room_count, 0);
 }
 
+TEST(RoomSegmenter, ResultsDoNotDependOnEarlierCalls) {
+  // The segmenter keeps its buffers per thread between calls: maps of other sizes in between
+  // change nothing.
+  const cv::Mat a = test::threeRoomsAndCorridor();
+  cv::Mat b = a.clone();
+  box(b, 7.0, 0, 16.4, 10.4, CellState::kUnknown);
+  const RoomSegmentation first = RoomSegmenter().segment(a, test::kRes);
+  const cv::Mat big = cv::repeat(a, 2, 3);
+  RoomSegmenter().segment(big, test::kRes);
+  const RoomSegmentation partial = RoomSegmenter().segment(b, test::kRes);
+  const RoomSegmentation again = RoomSegmenter().segment(a, test::kRes);
+  EXPECT_EQ(again.room_count, first.room_count);
+  EXPECT_EQ(cv::countNonZero(again.labels != first.labels), 0);
+  EXPECT_GT(partial.room_count, 0);
+  EXPECT_EQ(cv::countNonZero(RoomSegmenter().segment(b, test::kRes).labels != partial.labels), 0);
+}
+
 TEST(RoomSegmenter, RejectsBadInputAndOptions) {
   EXPECT_THROW(RoomSegmenter().segment(cv::Mat(3, 3, CV_32S), 0.05), InvalidArgument);
   EXPECT_THROW(RoomSegmenter().segment(canvas(1, 1), 0.0), InvalidArgument);

@@ -53,30 +53,27 @@ std::vector<ParameterRef> PointCloudMapOptions::parameters() {
 PointCloudMap::PointCloudMap(const PointCloudMapOptions& options) : options_(options) {
   options_.validate();
   inv_voxel_ = static_cast<float>(1.0 / options_.voxel_size_m);
-  keys_.assign(1024, kEmpty);
-  slot_voxel_.assign(1024, 0);
-  mask_ = keys_.size() - 1;
+  slots_.assign(1024, Slot{kEmpty, 0});
+  mask_ = slots_.size() - 1;
 }
 
 std::size_t PointCloudMap::slotOf(std::uint64_t key) const {
   std::size_t slot = mix(key) & mask_;
-  while (keys_[slot] != key && keys_[slot] != kEmpty) slot = (slot + 1) & mask_;
+  while (slots_[slot].key != key && slots_[slot].key != kEmpty) slot = (slot + 1) & mask_;
   return slot;
 }
 
 void PointCloudMap::grow() {
-  keys_.assign(keys_.size() * 2, kEmpty);
-  slot_voxel_.assign(keys_.size(), 0);
-  mask_ = keys_.size() - 1;
+  slots_.assign(slots_.size() * 2, Slot{kEmpty, 0});
+  mask_ = slots_.size() - 1;
   for (std::size_t v = 0; v < voxel_keys_.size(); ++v) {
     const std::size_t slot = slotOf(voxel_keys_[v]);
-    keys_[slot] = voxel_keys_[v];
-    slot_voxel_[slot] = static_cast<std::uint32_t>(v);
+    slots_[slot] = {voxel_keys_[v], static_cast<std::uint32_t>(v)};
   }
 }
 
 std::size_t PointCloudMap::insert(const std::vector<Eigen::Vector3f>& points_map) {
-  const std::size_t before = counts_.size();
+  const std::size_t before = voxels_.size();
   const float voxel = static_cast<float>(options_.voxel_size_m);
   const float limit = static_cast<float>(kBias - 1);
   // First the voxel key of every point (kEmpty: skipped), so that the hash slots of points a
@@ -99,12 +96,17 @@ std::size_t PointCloudMap::insert(const std::vector<Eigen::Vector3f>& points_map
   std::uint64_t recent_key[kRecent];
   std::uint32_t recent_voxel[kRecent];
   std::fill(std::begin(recent_key), std::end(recent_key), kEmpty);
-  constexpr std::size_t kPrefetchAhead = 12;
-  for (std::size_t i = 0; i < keys.size(); ++i) {
-    if (i + kPrefetchAhead < keys.size() && keys[i + kPrefetchAhead] != kEmpty) {
-      const std::size_t ahead = mix(keys[i + kPrefetchAhead]) & mask_;
-      __builtin_prefetch(keys_.data() + ahead);
-      __builtin_prefetch(slot_voxel_.data() + ahead);
+  // Two prefetch stages: the slot of the point kSlotAhead ahead, then, once that slot is
+  // likely in cache, the voxel it points to for the point kVoxelAhead ahead.
+  constexpr std::size_t kSlotAhead = 16, kVoxelAhead = 8;
+  const std::size_t n = keys.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    if (i + kSlotAhead < n && keys[i + kSlotAhead] != kEmpty) {
+      __builtin_prefetch(slots_.data() + (mix(keys[i + kSlotAhead]) & mask_));
+    }
+    if (i + kVoxelAhead < n && keys[i + kVoxelAhead] != kEmpty) {
+      const Slot& ahead = slots_[mix(keys[i + kVoxelAhead]) & mask_];
+      if (ahead.key == keys[i + kVoxelAhead]) __builtin_prefetch(voxels_.data() + ahead.voxel);
     }
     const std::uint64_t key = keys[i];
     if (key == kEmpty) continue;
@@ -114,39 +116,37 @@ std::size_t PointCloudMap::insert(const std::vector<Eigen::Vector3f>& points_map
       v = recent_voxel[r];
     } else {
       std::size_t slot = slotOf(key);
-      if (keys_[slot] == key) {
-        v = slot_voxel_[slot];
+      if (slots_[slot].key == key) {
+        v = slots_[slot].voxel;
       } else {
-        if (counts_.size() >= static_cast<std::size_t>(options_.max_points)) {
+        if (voxels_.size() >= static_cast<std::size_t>(options_.max_points)) {
           ++dropped_;
           continue;
         }
-        if ((counts_.size() + 1) * 2 > keys_.size()) {
+        if ((voxels_.size() + 1) * 2 > slots_.size()) {
           grow();
           slot = slotOf(key);
         }
-        v = static_cast<std::uint32_t>(counts_.size());
-        keys_[slot] = key;
-        slot_voxel_[slot] = v;
+        v = static_cast<std::uint32_t>(voxels_.size());
+        slots_[slot] = {key, v};
         voxel_keys_.push_back(key);
-        sums_.push_back(Eigen::Vector3f::Zero());
-        counts_.push_back(0);
+        voxels_.push_back({Eigen::Vector3f::Zero(), 0});
       }
       recent_key[r] = key;
       recent_voxel[r] = v;
     }
-    // Sums relative to the voxel centre keep float precision far from the origin.
-    sums_[v] += points_map[i] - voxelCentre(key, voxel);
-    ++counts_[v];
+    Voxel& vox = voxels_[v];
+    vox.sum += points_map[i] - voxelCentre(key, voxel);
+    ++vox.count;
   }
-  return counts_.size() - before;
+  return voxels_.size() - before;
 }
 
 std::vector<Eigen::Vector3f> PointCloudMap::points() const {
-  std::vector<Eigen::Vector3f> out(counts_.size());
+  std::vector<Eigen::Vector3f> out(voxels_.size());
   const float voxel = static_cast<float>(options_.voxel_size_m);
-  for (std::size_t v = 0; v < counts_.size(); ++v) {
-    out[v] = voxelCentre(voxel_keys_[v], voxel) + sums_[v] / static_cast<float>(counts_[v]);
+  for (std::size_t v = 0; v < voxels_.size(); ++v) {
+    out[v] = voxelCentre(voxel_keys_[v], voxel) + voxels_[v].sum / static_cast<float>(voxels_[v].count);
   }
   return out;
 }
@@ -163,8 +163,9 @@ std::pair<Eigen::Vector3f, Eigen::Vector3f> PointCloudMap::bounds() const {
 }
 
 std::size_t PointCloudMap::memoryBytes() const {
-  return keys_.capacity() * sizeof(std::uint64_t) + slot_voxel_.capacity() * sizeof(std::uint32_t) +
-         sums_.capacity() * sizeof(Eigen::Vector3f) + counts_.capacity() * sizeof(std::uint32_t) +
+  // The same bytes as separate arrays of keys (8), slot voxel indices (4), sums (12) and
+  // counts (4) would hold.
+  return slots_.capacity() * sizeof(Slot) + voxels_.capacity() * sizeof(Voxel) +
          voxel_keys_.capacity() * sizeof(std::uint64_t);
 }
 

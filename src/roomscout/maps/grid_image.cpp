@@ -5,6 +5,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "roomscout/core/errors.hpp"
+#include "roomscout/maps/run_components.hpp"
 
 namespace roomscout::maps {
 
@@ -17,6 +18,7 @@ struct StateRule {
   explicit StateRule(const OccupancyGrid& grid)
       : occupied(static_cast<float>(grid.options().occupied_threshold)),
         free(static_cast<float>(grid.options().free_threshold)) {}
+  bool known(float l) const { return (l > occupied) | (l < free); }
   std::uint8_t operator()(float l) const {
     static_assert(static_cast<int>(CellState::kUnknown) == 0 && static_cast<int>(CellState::kFree) == 1 &&
                   static_cast<int>(CellState::kOccupied) == 2);
@@ -51,8 +53,8 @@ std::size_t knownCellCount(const OccupancyGrid& grid) {
   constexpr std::size_t kBlock = 4096;  // 32-bit partial sums vectorise better
   for (std::size_t start = 0; start < n; start += kBlock) {
     const std::size_t end = std::min(n, start + kBlock);
-    std::uint32_t block = 0;
-    for (std::size_t i = start; i < end; ++i) block += rule(grid.logOdds(i)) != 0;
+    std::int32_t block = 0;
+    for (std::size_t i = start; i < end; ++i) block += rule.known(grid.logOdds(i));
     known += block;
   }
   return known;
@@ -76,22 +78,18 @@ cv::Mat fillableFreeSpace(const cv::Mat& states, int max_blob_area_px, int max_b
   // Components of everything not free: a blob of furniture seen from all sides, or a cabinet
   // whose inside was never seen (an occupied rim around unknown cells). A wall seen only in
   // part joins the large unknown outside and is never small.
-  const cv::Mat not_free = (states != kFree);
-  cv::Mat labels, stats, centroids;
-  const int n = cv::connectedComponentsWithStats(not_free, labels, stats, centroids, 8, CV_32S);
-  std::vector<std::uint8_t> candidate(n, 0);
-  for (int i = 1; i < n; ++i) {
-    const int x = stats.at<int>(i, cv::CC_STAT_LEFT), y = stats.at<int>(i, cv::CC_STAT_TOP);
-    const int w = stats.at<int>(i, cv::CC_STAT_WIDTH), h = stats.at<int>(i, cv::CC_STAT_HEIGHT);
-    const bool touches_border = x == 0 || y == 0 || x + w == states.cols || y + h == states.rows;
-    candidate[i] = !touches_border && stats.at<int>(i, cv::CC_STAT_AREA) <= max_blob_area_px &&
-                   std::max(w, h) <= max_blob_extent_px;
+  const RunComponents blobs = runComponents(states, 8, [kFree](std::uint8_t v) { return v != kFree; });
+  std::vector<std::uint8_t> candidate(blobs.components.size(), 0);
+  for (std::size_t i = 0; i < blobs.components.size(); ++i) {
+    const RunComponent& c = blobs.components[i];
+    const bool touches_border = c.min_x == 0 || c.min_y == 0 || c.max_x == states.cols - 1 || c.max_y == states.rows - 1;
+    candidate[i] = !touches_border && c.area <= max_blob_area_px &&
+                   std::max(c.max_x - c.min_x + 1, c.max_y - c.min_y + 1) <= max_blob_extent_px;
   }
-  for (int y = 0; y < states.rows; ++y) {
-    const int* lrow = labels.ptr<int>(y);
-    auto* out = space.ptr<std::uint8_t>(y);
-    for (int x = 0; x < states.cols; ++x) {
-      if (lrow[x] != 0 && candidate[lrow[x]]) out[x] = 255;
+  for (const PixelRun& r : blobs.runs) {
+    if (candidate[r.component]) {
+      std::uint8_t* row = space.ptr<std::uint8_t>(r.y);
+      std::fill(row + r.x_begin, row + r.x_end, std::uint8_t{255});
     }
   }
   return space;

@@ -6,9 +6,6 @@
 #include <numeric>
 
 #include <opencv2/imgproc.hpp>
-#include <cstring>
-#include <cstdio>
-#include "roomscout/maps/distance_transform.hpp"
 
 #include "roomscout/core/errors.hpp"
 #include "roomscout/maps/grid_image.hpp"
@@ -25,10 +22,8 @@ struct Core {
   int level = -1;
 };
 
-/// A cell of the superlevel-set sweep's union-find; one cache line holds four. Fields other
-/// than `parent` are meaningful at roots only.
-struct SweepNode {
-  int parent = -1;    ///< -1: not in the sweep yet
+/// What the sweep keeps per component, at its root cell.
+struct SweepRoot {
   int area = 0;       ///< cells of the component
   int peak_cell = 0;  ///< a cell of highest clearance
   int peak_core = 0;  ///< highest clearance bin << 1 | "holds a core"
@@ -36,27 +31,35 @@ struct SweepNode {
   bool core() const { return peak_core & 1; }
 };
 
-int findRoot(std::vector<SweepNode>& node, int i) {
-  while (node[i].parent != i) {
-    node[i].parent = node[node[i].parent].parent;
-    i = node[i].parent;
+int findRoot(int* parent, int i) {
+  while (parent[i] != i) {
+    parent[i] = parent[parent[i]];
+    i = parent[i];
   }
   return i;
 }
 
 /// Buffers of one segmentation, kept per thread between calls so that an episode's updates
 /// do not allocate (and page-fault) ten image-sized arrays each time. Invariants between
-/// calls: every `node` has parent -1, every `label` is 0, every bucket is empty.
+/// calls: every `parent` is -1, every `label` is 0, every bucket is empty (`clean`; a call
+/// that did not finish, e.g. on bad_alloc, leaves it false and the next one resets them).
 struct Scratch {
   cv::Mat space, cut_space, dist;
-  std::vector<int> bin, start, order, label, stack;
-  std::vector<SweepNode> node;
+  std::vector<int> bin, start, order, label, stack, parent;
+  std::vector<SweepRoot> root;
   std::vector<std::vector<int>> buckets;
   std::vector<Core> cores;
+  bool clean = true;
 };
 
 Scratch& scratch() {
   thread_local Scratch s;
+  if (!s.clean) {
+    std::fill(s.parent.begin(), s.parent.end(), -1);
+    std::fill(s.label.begin(), s.label.end(), 0);
+    for (std::vector<int>& bucket : s.buckets) bucket.clear();
+  }
+  s.clean = false;
   return s;
 }
 
@@ -132,12 +135,6 @@ int segmentKnown(const RoomSegmenterOptions& options, const cv::Mat& states, dou
            std::max(1, static_cast<int>(std::lround(options.wall_max_thickness_m / resolution_m))));
   cv::distanceTransform(s.cut_space, s.dist, cv::DIST_L2, cv::DIST_MASK_PRECISE, CV_32F);
 
-  {  // TEMP equality check
-    cv::Mat mine;
-    maps::distanceTransformL2(s.cut_space, mine);
-    if (cv::norm(mine != s.dist, cv::NORM_L1) != 0 || std::memcmp(mine.data, s.dist.data, mine.total() * 4) != 0) { std::fprintf(stderr, "EDT MISMATCH\n"); std::abort(); }
-    static int checks = 0; if (++checks % 100 == 0) std::fprintf(stderr, "edt checks %d\n", checks);
-  }
 
   const int w = space.cols;
   const int n = space.rows * space.cols;
@@ -180,47 +177,52 @@ int segmentKnown(const RoomSegmenterOptions& options, const cv::Mat& states, dou
   // Sweep of the superlevel sets of clearance (union-find). When a neck joins two components
   // that are both rooms (large enough, with a core far from walls) and the neck is narrow
   // for both, each becomes a core, unless it holds cores already.
-  std::vector<SweepNode>& node = s.node;
-  if (node.size() < static_cast<std::size_t>(n)) node.resize(n);
+  // The union-find's parents (-1: not swept yet) apart from the roots' data: the neighbour
+  // tests and root walks, most of the sweep's memory traffic, read 4 bytes per cell.
+  if (s.parent.size() < static_cast<std::size_t>(n)) s.parent.resize(n, -1);
+  if (s.root.size() < static_cast<std::size_t>(n)) s.root.resize(n);
+  int* parent = s.parent.data();
+  SweepRoot* root = s.root.data();
   std::vector<Core>& cores = s.cores;
   cores.clear();
-  auto isRoom = [&](int r) { return node[r].area >= min_room_cells && node[r].peak() >= core_bin; };
+  auto isRoom = [&](int r) { return root[r].area >= min_room_cells && root[r].peak() >= core_bin; };
   for (int rank = 0; rank <= max_bin; ++rank) {
     const int level = max_bin - rank;
     for (int i = start[rank]; i < start[rank + 1]; ++i) {
       const int p = order[i];
-      node[p] = {p, 1, p, level << 1};
+      parent[p] = p;
+      root[p] = {1, p, level << 1};
       for (const int off : offsets) {
         const int q = p + off;
-        if (node[q].parent < 0) continue;
-        int a = findRoot(node, p), b = findRoot(node, q);
+        if (parent[q] < 0) continue;
+        int a = findRoot(parent, p), b = findRoot(parent, q);
         if (a == b) continue;
-        if (level <= door_bin && isRoom(a) && isRoom(b) && level <= ratio * node[a].peak() &&
-            level <= ratio * node[b].peak()) {
+        if (level <= door_bin && isRoom(a) && isRoom(b) && level <= ratio * root[a].peak() &&
+            level <= ratio * root[b].peak()) {
           for (const int r : {a, b}) {
-            if (!node[r].core()) cores.push_back({node[r].peak_cell, level});
-            node[r].peak_core |= 1;
+            if (!root[r].core()) cores.push_back({root[r].peak_cell, level});
+            root[r].peak_core |= 1;
           }
         }
-        if (node[a].area < node[b].area) std::swap(a, b);
-        SweepNode& na = node[a];
-        const SweepNode& nb = node[b];
-        node[b].parent = a;
-        na.area += nb.area;
-        const int core = (na.peak_core | nb.peak_core) & 1;
-        if (nb.peak() > na.peak()) {
-          na.peak_core = nb.peak_core;
-          na.peak_cell = nb.peak_cell;
+        if (root[a].area < root[b].area) std::swap(a, b);
+        SweepRoot& ra = root[a];
+        const SweepRoot& rb = root[b];
+        parent[b] = a;
+        ra.area += rb.area;
+        const int core = (ra.peak_core | rb.peak_core) & 1;
+        if (rb.peak() > ra.peak()) {
+          ra.peak_core = rb.peak_core;
+          ra.peak_cell = rb.peak_cell;
         }
-        na.peak_core = (na.peak_core & ~1) | core;
+        ra.peak_core = (ra.peak_core & ~1) | core;
       }
     }
   }
   for (const int p : order) {
-    const SweepNode& np = node[p];
-    if (np.parent == p && !np.core() && np.area >= min_isolated_cells) cores.push_back({np.peak_cell, -1});
+    const SweepRoot& rp = root[p];
+    if (parent[p] == p && !rp.core() && rp.area >= min_isolated_cells) cores.push_back({rp.peak_cell, -1});
   }
-  for (const int p : order) node[p].parent = -1;
+  for (const int p : order) parent[p] = -1;
 
   // Cores become labels; they grow back into all of the space by decreasing clearance.
   std::vector<int>& label = s.label;
@@ -335,6 +337,7 @@ int segmentKnown(const RoomSegmenterOptions& options, const cv::Mat& states, dou
       out[x] = final_id[r];
     }
   }
+  s.clean = true;
   return next;
 }
 

@@ -9,6 +9,7 @@
 
 #include "roomscout/core/errors.hpp"
 #include "roomscout/core/occupancy_grid.hpp"
+#include "roomscout/maps/run_components.hpp"
 
 namespace roomscout {
 
@@ -51,21 +52,32 @@ void SemanticMap::update(const GridGeometry& geometry, const cv::Mat& segment_la
     dx = static_cast<int>(std::lround((geometry.origin_m().x() - geometry_.origin_m().x()) / geometry.resolution_m()));
     dy = static_cast<int>(std::lround((geometry.origin_m().y() - geometry_.origin_m().y()) / geometry.resolution_m()));
   }
-  double max_label = 0;
-  cv::minMaxLoc(segment_labels, nullptr, &max_label);
-  const int max_new = std::max(0, static_cast<int>(max_label));
+  // Per row, the columns [first, last] that hold room labels (first > last: none), so the
+  // passes below skip the unknown part of a partial map.
+  const int rows = segment_labels.rows, cols = segment_labels.cols;
+  std::vector<int> first(rows, cols), last(rows, -1);
+  int max_new = 0;
+  for (int y = 0; y < rows; ++y) {
+    const int* row = segment_labels.ptr<int>(y);
+    int x0 = 0, x1 = cols - 1;
+    while (x0 < cols && row[x0] <= 0) ++x0;
+    if (x0 == cols) continue;
+    while (row[x1] <= 0) --x1;
+    first[y] = x0;
+    last[y] = x1;
+    for (int x = x0; x <= x1; ++x) max_new = std::max(max_new, row[x]);
+  }
   const int max_old = next_id_;
   std::vector<int> overlap(have_old ? static_cast<std::size_t>(max_new + 1) * (max_old + 1) : 0, 0);  // [new][old]
-  for (int y = 0; have_old && y < segment_labels.rows; ++y) {
+  for (int y = 0; have_old && y < rows; ++y) {
     const int* row = segment_labels.ptr<int>(y);
     const int oy = y + dy;
     const int* old_row = oy >= 0 && oy < labels_.rows ? labels_.ptr<int>(oy) : nullptr;
     if (!old_row) continue;
-    for (int x = 0; x < segment_labels.cols; ++x) {
-      const int ox = x + dx;
-      if (row[x] > 0 && ox >= 0 && ox < labels_.cols && old_row[ox] > 0) {
-        ++overlap[static_cast<std::size_t>(row[x]) * (max_old + 1) + old_row[ox]];
-      }
+    const int x0 = std::max(first[y], -dx), x1 = std::min(last[y], labels_.cols - 1 - dx);
+    for (int x = x0; x <= x1; ++x) {
+      const int old = old_row[x + dx];
+      if (row[x] > 0 && old > 0) ++overlap[static_cast<std::size_t>(row[x]) * (max_old + 1) + old];
     }
   }
   std::vector<std::tuple<int, int, int>> pairs;  // (cells, new, old)
@@ -80,9 +92,9 @@ void SemanticMap::update(const GridGeometry& geometry, const cv::Mat& segment_la
   });
   std::vector<int> id_of(max_new + 1, 0);
   std::set<int> taken;
-  for (const auto& [cells, s, old] : pairs) {
-    if (id_of[s] || taken.count(old)) continue;
-    id_of[s] = old;
+  for (const auto& [cells, sg, old] : pairs) {
+    if (id_of[sg] || taken.count(old)) continue;
+    id_of[sg] = old;
     taken.insert(old);
   }
 
@@ -98,15 +110,21 @@ void SemanticMap::update(const GridGeometry& geometry, const cv::Mat& segment_la
   // Indexed by id; ids never exceed next_id_ after this update.
   std::vector<Acc> acc(static_cast<std::size_t>(next_id_ + max_new + 1));
   const auto unknown = static_cast<std::uint8_t>(CellState::kUnknown);
-  // New segments numbered in row-major order of first appearance get fresh ids in that order.
-  for (int y = 0; y < segment_labels.rows; ++y) {
+  // One pass, row by row: new segments numbered in row-major order of first appearance get
+  // fresh ids in that order; then, on the finished row, the rooms it touches (to its right
+  // and in the row below, which is final already) and its room cells next to unknown space.
+  // A room is open when such cells form a frontier at least kMinFrontier_m long (single
+  // unknown cells on wall faces do not count); the frontier is kept as runs of cells.
+  maps::RunComponents fronts;
+  for (int y = 0; y < rows; ++y) {
+    if (first[y] > last[y]) continue;
     const int* row = segment_labels.ptr<int>(y);
     int* out = labels_.ptr<int>(y);
-    for (int x = 0; x < segment_labels.cols; ++x) {
-      const int s = row[x];
-      if (s <= 0) continue;
-      if (!id_of[s]) id_of[s] = next_id_++;
-      const int id = id_of[s];
+    for (int x = first[y]; x <= last[y]; ++x) {
+      const int sg = row[x];
+      if (sg <= 0) continue;
+      if (!id_of[sg]) id_of[sg] = next_id_++;
+      const int id = id_of[sg];
       out[x] = id;
       Acc& a = acc[id];
       ++a.cells;
@@ -117,48 +135,42 @@ void SemanticMap::update(const GridGeometry& geometry, const cv::Mat& segment_la
       a.min_y = std::min(a.min_y, y);
       a.max_y = std::max(a.max_y, y);
     }
-  }
-  // Room cells next to unknown space; a room is open when such cells form a frontier at
-  // least kMinFrontier_m long (single unknown cells on wall faces do not count).
-  cv::Mat frontier = cv::Mat::zeros(labels_.size(), CV_8U);
-  for (int y = 0; y < labels_.rows; ++y) {
-    const int* row = labels_.ptr<int>(y);
-    const int* up = y + 1 < labels_.rows ? labels_.ptr<int>(y + 1) : nullptr;
-    for (int x = 0; x < labels_.cols; ++x) {
-      const int id = row[x];
-      if (!id) continue;
-      Acc& a = acc[id];
-      if (x + 1 < labels_.cols && row[x + 1] && row[x + 1] != id) {
-        a.neighbours.insert(row[x + 1]);
-        acc[row[x + 1]].neighbours.insert(id);
-      }
-      if (up && up[x] && up[x] != id) {
-        a.neighbours.insert(up[x]);
-        acc[up[x]].neighbours.insert(id);
-      }
-      if (!states.empty()) {
-        for (const auto& [nx, ny] : {std::pair{x + 1, y}, {x - 1, y}, {x, y + 1}, {x, y - 1}}) {
-          if (nx >= 0 && ny >= 0 && nx < states.cols && ny < states.rows && states.ptr<std::uint8_t>(ny)[nx] == unknown) {
-            frontier.ptr<std::uint8_t>(y)[x] = 255;
-            break;
-          }
+    const int* below = y > 0 ? labels_.ptr<int>(y - 1) : nullptr;
+    const std::uint8_t* st = states.empty() ? nullptr : states.ptr<std::uint8_t>(y);
+    const std::uint8_t* st_below = st && y > 0 ? states.ptr<std::uint8_t>(y - 1) : nullptr;
+    const std::uint8_t* st_above = st && y + 1 < rows ? states.ptr<std::uint8_t>(y + 1) : nullptr;
+    int run_begin = -1;
+    for (int x = first[y]; x <= last[y] + 1; ++x) {
+      const int id = x <= last[y] ? out[x] : 0;
+      bool front = false;
+      if (id) {
+        Acc& a = acc[id];
+        if (x + 1 < cols && out[x + 1] && out[x + 1] != id) {
+          a.neighbours.insert(out[x + 1]);
+          acc[out[x + 1]].neighbours.insert(id);
         }
+        if (below && below[x] && below[x] != id) {
+          a.neighbours.insert(below[x]);
+          acc[below[x]].neighbours.insert(id);
+        }
+        front = st && ((x + 1 < cols && st[x + 1] == unknown) || (x > 0 && st[x - 1] == unknown) ||
+                       (st_above && st_above[x] == unknown) || (st_below && st_below[x] == unknown));
+      }
+      if (front && run_begin < 0) run_begin = x;
+      if (!front && run_begin >= 0) {
+        fronts.runs.push_back({y, run_begin, x, 0});
+        run_begin = -1;
       }
     }
   }
 
   const double res = geometry.resolution_m();
-  {
-    cv::Mat cc, stats, centroids;
-    const int n = cv::connectedComponentsWithStats(frontier, cc, stats, centroids, 8, CV_32S);
-    const int min_cells = std::max(1, static_cast<int>(std::lround(kMinFrontier_m / res)));
-    for (int y = 0; y < cc.rows; ++y) {
-      const int* crow = cc.ptr<int>(y);
-      const int* lrow = labels_.ptr<int>(y);
-      for (int x = 0; x < cc.cols; ++x) {
-        if (crow[x] > 0 && stats.at<int>(crow[x], cv::CC_STAT_AREA) >= min_cells) acc[lrow[x]].open = true;
-      }
-    }
+  maps::internal::joinRuns(fronts, 8);
+  const int min_front_cells = std::max(1, static_cast<int>(std::lround(kMinFrontier_m / res)));
+  for (const maps::PixelRun& run : fronts.runs) {
+    if (fronts.components[run.component].area < min_front_cells) continue;
+    const int* lrow = labels_.ptr<int>(run.y);
+    for (int x = run.x_begin; x < run.x_end; ++x) acc[lrow[x]].open = true;
   }
   regions_.clear();
   for (int id = 1; id < static_cast<int>(acc.size()); ++id) {

@@ -42,13 +42,22 @@ cv::Mat thinZhangSuen(const cv::Mat& binary) {
     std::uint8_t* dst = img.data() + static_cast<std::size_t>(y) * w;
     for (int x = 1; x + 1 < w; ++x) dst[x] = row[x] != 0;
   }
-  // Neighbour offsets P2..P9: N, NE, E, SE, S, SW, W, NW (N = previous row).
+  // Neighbour offsets P2..P9: N, NE, E, SE, S, SW, W, NW (N = previous row). off[k + 4] is
+  // -off[k]: pixel p is neighbour (k + 4) % 8 of its neighbour p + off[k].
   const int off[8] = {-w, -w + 1, 1, w + 1, w, w - 1, -1, -w - 1};
-  auto code = [&](int p) {
-    const std::uint8_t* c = img.data() + p;
-    return (c[off[0]] & 1) | (c[off[1]] & 1) << 1 | (c[off[2]] & 1) << 2 | (c[off[3]] & 1) << 3 |
-           (c[off[4]] & 1) << 4 | (c[off[5]] & 1) << 5 | (c[off[6]] & 1) << 6 | (c[off[7]] & 1) << 7;
-  };
+  // Every pixel's 8-neighbourhood code (bit k: neighbour k is foreground), kept up to date as
+  // pixels are deleted, so that testing a pixel is one table lookup.
+  std::vector<std::uint8_t> code(img.size(), 0);
+  for (int y = 1; y + 1 < h; ++y) {
+    const std::uint8_t* up = img.data() + static_cast<std::size_t>(y - 1) * w;
+    const std::uint8_t* mid = up + w;
+    const std::uint8_t* down = mid + w;
+    std::uint8_t* c = code.data() + static_cast<std::size_t>(y) * w;
+    for (int x = 1; x + 1 < w; ++x) {
+      c[x] = static_cast<std::uint8_t>(up[x] | up[x + 1] << 1 | mid[x + 1] << 2 | down[x + 1] << 3 | down[x] << 4 |
+                                       down[x - 1] << 5 | mid[x - 1] << 6 | up[x - 1] << 7);
+    }
+  }
   // A pixel's verdict in a sub-iteration depends only on its 8-neighbourhood and on the kind
   // of sub-iteration. So each kind keeps its own queue: the border pixels at first, then the
   // foreground neighbours of deleted pixels; a pixel tested and kept is not tested again by
@@ -60,7 +69,7 @@ cv::Mat thinZhangSuen(const cv::Mat& binary) {
   for (int y = 1; y + 1 < h; ++y) {
     for (int x = 1; x + 1 < w; ++x) {
       const int p = y * w + x;
-      if (img[p] && code(p) != 0xFF) {
+      if (img[p] && code[p] != 0xFF) {
         queue[0].push_back(p);
         queue[1].push_back(p);
         img[p] |= kQueued[0] | kQueued[1];
@@ -75,7 +84,7 @@ cv::Mat thinZhangSuen(const cv::Mat& binary) {
     removed.clear();
     for (const int p : queue[pass]) {
       img[p] &= static_cast<std::uint8_t>(~kQueued[pass]);
-      if ((img[p] & 1) && table[code(p)]) removed.push_back(p);
+      if ((img[p] & 1) && table[code[p]]) removed.push_back(p);
     }
     queue[pass].clear();
     if (removed.empty()) {
@@ -83,17 +92,19 @@ cv::Mat thinZhangSuen(const cv::Mat& binary) {
       continue;
     }
     idle = 0;
-    for (const int p : removed) img[p] &= static_cast<std::uint8_t>(~1);
+    for (const int p : removed) {
+      img[p] &= static_cast<std::uint8_t>(~1);
+      for (int k = 0; k < 8; ++k) code[p + off[k]] &= static_cast<std::uint8_t>(~(1u << ((k + 4) & 7)));
+    }
     for (const int p : removed) {
       for (const int o : off) {
         const int q = p + o;
-        if (!(img[q] & 1)) continue;
+        const std::uint8_t v = img[q];
+        if (!(v & 1) || (v & (kQueued[0] | kQueued[1])) == (kQueued[0] | kQueued[1])) continue;
         for (int k = 0; k < 2; ++k) {
-          if (!(img[q] & kQueued[k])) {
-            img[q] |= kQueued[k];
-            queue[k].push_back(q);
-          }
+          if (!(v & kQueued[k])) queue[k].push_back(q);
         }
+        img[q] = v | kQueued[0] | kQueued[1];
       }
     }
   }

@@ -4,12 +4,10 @@
 #include <cmath>
 
 #include <opencv2/imgproc.hpp>
-#include <cstring>
-#include <cstdio>
-#include "roomscout/maps/distance_transform.hpp"
 
 #include "roomscout/core/errors.hpp"
 #include "roomscout/maps/grid_image.hpp"
+#include "roomscout/maps/run_components.hpp"
 #include "roomscout/maps/semantic_map.hpp"
 #include "roomscout/maps/thinning.hpp"
 
@@ -100,32 +98,18 @@ TopologicalMap TopologyBuilder::build(const cv::Mat& states, const GridGeometry&
     cv::morphologyEx(space, space, cv::MORPH_OPEN, kernel);
   }
   {
-    cv::Mat labels, stats, centroids;
-    const int n = cv::connectedComponentsWithStats(space, labels, stats, centroids, 4, CV_32S);
+    const maps::RunComponents patches = maps::runComponents(space, 4);
     const int min_cells = static_cast<int>(options_.min_free_area_m2 / (res * res));
-    std::vector<std::uint8_t> drop(n, 0);
-    bool any = false;
-    for (int i = 1; i < n; ++i) any |= (drop[i] = stats.at<int>(i, cv::CC_STAT_AREA) < min_cells);
-    if (any) {
-      for (int y = 0; y < space.rows; ++y) {
-        const int* l = labels.ptr<int>(y);
-        auto* s = space.ptr<std::uint8_t>(y);
-        for (int x = 0; x < space.cols; ++x) {
-          if (drop[l[x]]) s[x] = 0;
-        }
+    for (const maps::PixelRun& run : patches.runs) {
+      if (patches.components[run.component].area < min_cells) {
+        std::uint8_t* row = space.ptr<std::uint8_t>(run.y);
+        std::fill(row + run.x_begin, row + run.x_end, std::uint8_t{0});
       }
     }
   }
   cv::copyMakeBorder(space, space, 1, 1, 1, 1, cv::BORDER_CONSTANT, 0);
   cv::Mat clearance;
   cv::distanceTransform(space, clearance, cv::DIST_L2, cv::DIST_MASK_PRECISE, CV_32F);
-
-  {  // TEMP equality check
-    cv::Mat mine;
-    maps::distanceTransformL2(space, mine);
-    if (cv::norm(mine != clearance, cv::NORM_L1) != 0 || std::memcmp(mine.data, clearance.data, mine.total() * 4) != 0) { std::fprintf(stderr, "EDT MISMATCH\n"); std::abort(); }
-    static int checks = 0; if (++checks % 100 == 0) std::fprintf(stderr, "edt checks %d\n", checks);
-  }
 
   // 2. Skeleton.
   const cv::Mat skel = maps::thinZhangSuen(space);
@@ -139,8 +123,9 @@ TopologicalMap TopologyBuilder::build(const cv::Mat& states, const GridGeometry&
   std::vector<cv::Point> node_pixels;
   std::vector<int> crossing;
   for (int y = 1; y + 1 < h; ++y) {
+    const std::uint8_t* skel_row = skel.ptr<std::uint8_t>(y);
     for (int x = 1; x + 1 < w; ++x) {
-      if (!on(x, y)) continue;
+      if (!skel_row[x]) continue;
       int cn = 0;
       for (int k = 0; k < 8; ++k) {
         const bool a = on(x + kRingX[k], y + kRingY[k]), b = on(x + kRingX[(k + 1) % 8], y + kRingY[(k + 1) % 8]);
@@ -282,8 +267,9 @@ TopologicalMap TopologyBuilder::build(const cv::Mat& states, const GridGeometry&
   }
   // Loops without any node (a ring around an island): give each a node.
   for (int y = 1; y + 1 < h; ++y) {
+    const std::uint8_t* skel_row = skel.ptr<std::uint8_t>(y);
     for (int x = 1; x + 1 < w; ++x) {
-      if (!on(x, y) || node_of.at<int>(y, x) >= 0 || visited.at<std::uint8_t>(y, x)) continue;
+      if (!skel_row[x] || node_of.at<int>(y, x) >= 0 || visited.at<std::uint8_t>(y, x)) continue;
       const int id = static_cast<int>(nodes.size());
       nodes.push_back({{x, y}, clearance.at<float>(y, x), true});
       node_members.push_back({cv::Point(x, y)});

@@ -11,6 +11,7 @@ namespace roomscout::sim {
 void AnalysisMapsOptions::validate() const {
   if (!(period_s > 0.0)) throw OptionError("maps.period_s must be > 0");
   if (!(min_new_area_m2 >= 0.0)) throw OptionError("maps.min_new_area_m2 must be >= 0");
+  if (topology_every < 1) throw OptionError("maps.topology_every must be >= 1");
   segmentation.validate();
   topology.validate();
 }
@@ -19,6 +20,7 @@ std::vector<ParameterRef> AnalysisMapsOptions::parameters() {
   return {
       {"period_s", &period_s, "simulated time between update checks [s]"},
       {"min_new_area_m2", &min_new_area_m2, "newly known area that triggers an update [m^2]"},
+      {"topology_every", &topology_every, "rebuild the topological map on every n-th due update only"},
   };
 }
 
@@ -47,7 +49,7 @@ void AnalysisMapsObserver::onStep(const EpisodeSnapshot& snapshot) {
     // rebuilt, instead of counting the known cells a second time for the same decision.
     if (rooms_->update_ms_.size() != rooms_updates_seen_) {
       rooms_updates_seen_ = rooms_->update_ms_.size();
-      update(snapshot.grid);
+      if (due_updates_++ % options_.topology_every == 0) update(snapshot.grid);
     }
     return;
   }
@@ -59,6 +61,7 @@ void AnalysisMapsObserver::onStep(const EpisodeSnapshot& snapshot) {
       std::abs(static_cast<double>(known) - static_cast<double>(known_at_update_)) * res * res;
   if (updated_once_ && new_area_m2 < options_.min_new_area_m2) return;
   known_at_update_ = known;
+  if (kind_ == AnalysisMapKind::kTopological && due_updates_++ % options_.topology_every != 0) return;
   update(snapshot.grid);
 }
 

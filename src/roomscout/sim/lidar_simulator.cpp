@@ -54,10 +54,39 @@ LidarSimulator::LidarSimulator(const ColumnWorld& world, const LidarOptions& opt
                                (options_.elevation_max_deg - options_.elevation_min_deg) * k / (options_.num_rings - 1);
     elevations_rad_.push_back(e * deg);
   }
-  const std::size_t cells = world_.geometry().cellCount();
-  empty_columns_.assign(cells / 64 + 1, 0);
-  for (std::size_t i = 0; i < cells; ++i) {
-    if (world_.columnEmpty(i)) empty_columns_[i >> 6] |= std::uint64_t{1} << (i & 63);
+  // Chessboard distance of every raster cell to the nearest non-empty column (0: non-empty),
+  // capped at 255: two chamfer passes with unit weights are exact for this metric.
+  {
+    const int w = world_.geometry().width(), h = world_.geometry().height();
+    clear_cells_.assign(world_.geometry().cellCount(), 255);
+    std::uint8_t* d = clear_cells_.data();
+    auto relax = [&](std::size_t i, std::size_t j) { d[i] = std::min<int>(d[i], d[j] + 1); };
+    for (int y = 0; y < h; ++y) {
+      for (int x = 0; x < w; ++x) {
+        const std::size_t i = static_cast<std::size_t>(y) * w + x;
+        if (!world_.columnEmpty(i)) {
+          d[i] = 0;
+          continue;
+        }
+        if (x > 0) relax(i, i - 1);
+        if (y > 0) {
+          relax(i, i - w);
+          if (x > 0) relax(i, i - w - 1);
+          if (x + 1 < w) relax(i, i - w + 1);
+        }
+      }
+    }
+    for (int y = h - 1; y >= 0; --y) {
+      for (int x = w - 1; x >= 0; --x) {
+        const std::size_t i = static_cast<std::size_t>(y) * w + x;
+        if (x + 1 < w) relax(i, i + 1);
+        if (y + 1 < h) {
+          relax(i, i + w);
+          if (x + 1 < w) relax(i, i + w + 1);
+          if (x > 0) relax(i, i + w - 1);
+        }
+      }
+    }
   }
   const int n_columns = std::max(1, static_cast<int>(std::lround(360.0 / options_.azimuth_step_deg)));
   for (int c = 0; c < n_columns; ++c) {
@@ -145,23 +174,71 @@ void LidarSimulator::castColumn(const Eigen::Vector2d& origin_m, double z_m, dou
   double t_max_x = cos_az != 0 ? (step_x > 0 ? (x + 1 - p.x()) : (p.x() - x)) * t_delta_x : inf;
   double t_max_y = sin_az != 0 ? (step_y > 0 ? (y + 1 - p.y()) : (p.y() - y)) * t_delta_y : inf;
   double t_in = 0.0;
+  if (x < 0 || y < 0 || x >= w || y >= h) return;
+  // Steps left before the ray leaves the raster along x and along y.
+  int steps_x = step_x > 0 ? w - 1 - x : x;
+  int steps_y = step_y > 0 ? h - 1 - y : y;
   const std::ptrdiff_t cell_step_y = static_cast<std::ptrdiff_t>(step_y) * w;
   std::ptrdiff_t cell = static_cast<std::ptrdiff_t>(y) * w + x;
-  const std::uint64_t* empty = empty_columns_.data();
-  // Margin of the test that skips a cell no active ring can hit: far above the rounding of
-  // the heights compared (1e-15 m), far below any geometry, so only cells that cannot give a
-  // hit are skipped and every hit is computed exactly as without the test.
+  const std::uint8_t* clear_cells = clear_cells_.data();
+  // Margin of the tests that skip cells and rings that cannot give a hit: far above the
+  // rounding of the heights compared (1e-15 m), far below any geometry, so every hit is
+  // computed exactly as without the tests.
   constexpr double kSkipMargin_m = 1e-6;
-  while (active && static_cast<unsigned>(x) < static_cast<unsigned>(w) &&
-         static_cast<unsigned>(y) < static_cast<unsigned>(h)) {
-    // Branch-free step selection: the x/y choice is data-dependent and mispredicts often.
+  constexpr int kMinJumpClearance = 3;  // jump over squares of radius 2 and more
+  for (;;) {
+    const int clear = clear_cells[cell];
+    if (clear >= kMinJumpClearance) {
+      // Every cell within clear - 1 of this one (chessboard distance) is empty: jump to the
+      // step that leaves that square. The DDA parameters still advance by the same additions
+      // in the same order, and which step comes first is decided by the same comparison
+      // (an x-step i precedes a y-step j iff X_i < Y_j), so the ray leaves the square at the
+      // same cell and parameter as one step at a time; only the branchy per-cell loop is
+      // replaced by two independent chains of additions.
+      const int radius = clear - 1;
+      const int kx = std::min(radius, steps_x) + 1, ky = std::min(radius, steps_y) + 1;
+      double x_last = t_max_x, y_last = t_max_y;  // parameters of the kx-th x-step and ky-th y-step
+      for (int i = 1; i < kx; ++i) x_last += t_delta_x;
+      for (int j = 1; j < ky; ++j) y_last += t_delta_y;
+      double t_out;
+      if (x_last < y_last) {  // leaves along x; the y-steps taken before are those with Y_j <= x_last
+        int m = 0;
+        while (t_max_y <= x_last) {
+          t_max_y += t_delta_y;
+          ++m;
+        }
+        t_out = x_last;
+        t_max_x = x_last + t_delta_x;
+        cell += static_cast<std::ptrdiff_t>(kx) * step_x + m * cell_step_y;
+        steps_x -= kx;
+        steps_y -= m;
+      } else {  // leaves along y; the x-steps taken before are those with X_i < y_last
+        int m = 0;
+        while (t_max_x < y_last) {
+          t_max_x += t_delta_x;
+          ++m;
+        }
+        t_out = y_last;
+        t_max_y = y_last + t_delta_y;
+        cell += static_cast<std::ptrdiff_t>(m) * step_x + ky * cell_step_y;
+        steps_x -= m;
+        steps_y -= ky;
+      }
+      const double t_out_m = t_out * res;
+      if (t_out_m >= next_limit_m) retireUpTo(t_out_m);
+      if (!active || steps_x < 0 || steps_y < 0) return;
+      t_in = t_out;
+      continue;
+    }
     const bool along_x = t_max_x < t_max_y;
     const double t_out = along_x ? t_max_x : t_max_y;
     const double t_out_m = t_out * res;
-    if (!((empty[cell >> 6] >> (cell & 63)) & 1)) {
+    if (clear == 0) {
       const double t_in_m = t_in * res;
       const auto spans = world_.intervals(static_cast<std::size_t>(cell));
-      // Heights the active rings span in this cell (conservative: over [t_in_m, t_out_m]).
+      // Heights the active rings span in this cell (conservative: over [t_in_m, t_out_m]):
+      // a cell whose spans all lie outside them (by a margin far above the rounding of the
+      // heights compared, 1e-15 m, and far below any geometry) cannot give a hit.
       double z_lo = inf, z_hi = -inf;
       if (slopes_sorted) {
         const double lo = rings[std::countr_zero(active)].slope, hi = rings[63 - std::countl_zero(active)].slope;
@@ -216,11 +293,17 @@ void LidarSimulator::castColumn(const Eigen::Vector2d& origin_m, double z_m, dou
       }
     }
     if (t_out_m >= next_limit_m) retireUpTo(t_out_m);
-    t_max_x += along_x ? t_delta_x : 0.0;
-    t_max_y += along_x ? 0.0 : t_delta_y;
-    x += along_x ? step_x : 0;
-    y += along_x ? 0 : step_y;
-    cell += along_x ? step_x : cell_step_y;
+    if (!active) return;
+    // Next cell; the ray ends where it leaves the raster.
+    if (along_x) {
+      if (--steps_x < 0) return;
+      t_max_x += t_delta_x;
+      cell += step_x;
+    } else {
+      if (--steps_y < 0) return;
+      t_max_y += t_delta_y;
+      cell += cell_step_y;
+    }
     t_in = t_out;
   }
   // Beyond the raster there is neither floor nor ceiling: remaining rings have no return.

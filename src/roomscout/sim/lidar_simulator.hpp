@@ -2,7 +2,9 @@
 // Simulated 3D spinning lidar (Velodyne VLP-16 profile by default): rings of beams at fixed
 // elevations swept over 360 degrees, cast against the ColumnWorld with a 2D DDA per azimuth
 // column that all rings of that column share (they cross the same raster cells and differ
-// only in the height at which they cross them).
+// only in the height at which they cross them). The DDA jumps across squares of empty
+// columns and skips cells and rings whose heights cannot meet a solid span, with the same
+// arithmetic as a cell-by-cell walk, so the hits are bit for bit those of the plain walk.
 
 #include <cstdint>
 #include <optional>
@@ -92,9 +94,9 @@ class LidarSimulator {
   LidarOptions options_;
   std::vector<double> elevations_rad_;
   std::vector<double> cos_azimuth_, sin_azimuth_;  ///< per column, sensor frame
-  /// One bit per raster cell, set when its column is empty: the DDA's inner loop tests this
-  /// 1/32 of the column offsets' size, which stays in cache.
-  std::vector<std::uint64_t> empty_columns_;
+  /// Per raster cell, the chessboard distance to the nearest non-empty column (0: this one is
+  /// not empty), capped at 255: the DDA tests emptiness here and jumps across empty squares.
+  std::vector<std::uint8_t> clear_cells_;
   std::mt19937_64 rng_;
 };
 

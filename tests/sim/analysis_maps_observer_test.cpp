@@ -1,0 +1,89 @@
+// The analysis maps observers: update schedule and the topology_every option.
+
+#include "roomscout/sim/analysis_maps_observer.hpp"
+
+#include <gtest/gtest.h>
+
+#include "roomscout/core/errors.hpp"
+#include "roomscout/sim/world_model.hpp"
+#include "test_worlds.hpp"
+
+namespace roomscout::sim {
+namespace {
+
+/// A 16 x 6 m map of three rooms in a row (walls with 1 m doors), revealed 1 m further to the
+/// east at each step.
+OccupancyGrid revealed(double seen_m) {
+  OccupancyGrid grid(GridGeometry(Vec2::Zero(), 0.05, 320, 120));
+  const GridGeometry& g = grid.geometry();
+  for (int y = 0; y < g.height(); ++y) {
+    for (int x = 0; x < g.width(); ++x) {
+      const Vec2 p = g.centerOf(Cell{x, y});
+      if (p.x() > seen_m) continue;
+      const bool border = x < 4 || y < 4 || x >= g.width() - 4 || y >= g.height() - 4;
+      const bool partition = (std::abs(p.x() - 5.5) < 0.1 || std::abs(p.x() - 10.5) < 0.1) &&
+                             std::abs(p.y() - 3.0) > 0.5;
+      grid.setState(g.index(Cell{x, y}),
+                    border || partition ? CellState::kOccupied : CellState::kFree);
+    }
+  }
+  return grid;
+}
+
+struct Observed {
+  std::size_t semantic_updates = 0, topological_updates = 0;
+  TopologicalMap topology;
+};
+
+Observed drive(const AnalysisMapsOptions& options) {
+  const WorldModel model(testing::squareRoom(4.0));
+  AnalysisMapsObserver semantic(AnalysisMapKind::kSemantic, options);
+  AnalysisMapsObserver topological(AnalysisMapKind::kTopological, options, &semantic);
+  double t = 0.0;
+  for (double seen_m = 2.0; seen_m <= 16.0; seen_m += 1.0, t += 1.0) {
+    const OccupancyGrid grid = revealed(seen_m);
+    for (AnalysisMapsObserver* o : {&semantic, &topological})
+      o->onStep(EpisodeSnapshot{t, Pose2{}, grid, model, true});
+  }
+  const OccupancyGrid final_grid = revealed(16.0);
+  for (AnalysisMapsObserver* o : {&semantic, &topological}) {
+    o->onFinish(EpisodeSnapshot{t, Pose2{}, final_grid, model, true});
+  }
+  return {semantic.updateTimes_ms().size(), topological.updateTimes_ms().size(),
+          topological.topologicalMap()};
+}
+
+TEST(AnalysisMapsObserver, TopologyFollowsTheRoomsOrEveryNthOfTheirUpdates) {
+  const Observed every = drive({});
+  EXPECT_EQ(every.semantic_updates, 16u);  // 15 growing maps (>= 2 m^2 new each), then the end
+  EXPECT_EQ(every.topological_updates, every.semantic_updates);
+  AnalysisMapsOptions options;
+  options.topology_every = 4;
+  const Observed sparse = drive(options);
+  EXPECT_EQ(sparse.semantic_updates, every.semantic_updates);
+  EXPECT_EQ(sparse.topological_updates, 4u + 1u);  // updates 1, 5, 9, 13 of 15, then the end
+  // The final topological map is the same.
+  ASSERT_EQ(sparse.topology.nodes().size(), every.topology.nodes().size());
+  ASSERT_EQ(sparse.topology.edges().size(), every.topology.edges().size());
+  ASSERT_GT(every.topology.edges().size(), 0u);
+  for (std::size_t i = 0; i < every.topology.nodes().size(); ++i) {
+    EXPECT_EQ(sparse.topology.nodes()[i].position_m, every.topology.nodes()[i].position_m);
+    EXPECT_EQ(sparse.topology.nodes()[i].region_id, every.topology.nodes()[i].region_id);
+  }
+  for (std::size_t i = 0; i < every.topology.edges().size(); ++i) {
+    EXPECT_EQ(sparse.topology.edges()[i].polyline_m, every.topology.edges()[i].polyline_m);
+  }
+}
+
+TEST(AnalysisMapsObserver, RejectsBadScheduleOptions) {
+  AnalysisMapsOptions options;
+  options.topology_every = 0;
+  EXPECT_THROW(options.validate(), OptionError);
+  options = {};
+  options.period_s = 0.0;
+  EXPECT_THROW(options.validate(), OptionError);
+  EXPECT_NO_THROW(AnalysisMapsOptions{}.validate());
+}
+
+}  // namespace
+}  // namespace roomscout::sim
