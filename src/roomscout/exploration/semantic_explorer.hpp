@@ -23,8 +23,7 @@
 // the room of the nearest labelled cell within label_search_m.
 // The best S becomes the goal. It is re-evaluated when the goal is reached or fails, when its
 // point is no longer unknown (seen) or lies in the inflation, and every replan_period_s while
-// driving, when another point beats the goal's own score by switch_margin or the current room
-// gained a frontier point while the goal lies outside it.
+// driving, when another point beats the goal's own score by switch_margin.
 //
 // End: as improved_rrt (fewer than end_min_frontier_cells reachable frontier cells in
 // end_checks consecutive checks, each end_check_period_s; cells the robot came within
@@ -109,7 +108,6 @@ class SemanticExplorer final : public ExplorationStrategy {
   long randomDraws() const { return random_draws_; }
 
  private:
-  struct Scored;
   void updateRoom(const ExplorationInput& input);
   void collectCandidates(const ExplorationInput& input);
   void grow(const ExplorationInput& input, long iterations);
@@ -137,7 +135,6 @@ class SemanticExplorer final : public ExplorationStrategy {
   std::vector<Vec2> candidates_;
   std::vector<Vec2> blacklist_;
   std::vector<std::uint8_t> visited_;
-  std::size_t room_points_seen_ = 0;       ///< points in the current room at the last evaluation
   bool has_goal_ = false;
   Vec2 goal_m_ = Vec2::Zero();
   bool goal_in_room_ = false;
