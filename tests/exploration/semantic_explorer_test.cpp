@@ -100,6 +100,43 @@ TEST(SemanticExplorerTest, RoomRewardFlipsSignWithMembership) {
   EXPECT_DOUBLE_EQ(s.score(3.0, 2.0, true) - s.score(3.0, 2.0, false), 2.0 * o.room_reward);
 }
 
+TEST(SemanticExplorerTest, KeepsItsGoalUntilTheGoalsSquareIsExplored) {
+  TwoRoomGrid w;
+  SemanticExplorerOptions o;
+  o.replan_period_s = 100.0;  // no periodic switch: only the goal's own state matters here
+  SemanticExplorer s(5, o);
+  const Pose2 robot{2.0, 1.0, 0.0};
+  s.decide({w.grid, w.costmap, robot, 0.0, &w.semantic});
+  const Decision first = s.decide({w.grid, w.costmap, robot, 2.0, &w.semantic});
+  ASSERT_EQ(first.status, Decision::Status::kGoal);
+  const GridGeometry& g = w.grid.geometry();
+  ASSERT_TRUE(w.grid.isUnknown(g.index(g.cellOf(first.goal_m))));
+
+  // The goal's own cell and its neighbours are seen; the square around it still holds
+  // unknown space, so the goal stands.
+  auto reveal = [&](double half_m) {
+    const Cell c = g.cellOf(first.goal_m);
+    const int r = static_cast<int>(std::lround(half_m / g.resolution_m()));
+    for (int y = c.y - r; y <= c.y + r; ++y) {
+      for (int x = c.x - r; x <= c.x + r; ++x) {
+        if (g.contains(Cell{x, y})) w.grid.setState(g.index(Cell{x, y}), CellState::kFree);
+      }
+    }
+    w.costmap.update(w.grid);
+  };
+  reveal(0.1);
+  const Decision kept = s.decide({w.grid, w.costmap, robot, 2.5, &w.semantic});
+  ASSERT_EQ(kept.status, Decision::Status::kGoal);
+  EXPECT_LT((kept.goal_m - first.goal_m).norm(), 1e-9);
+
+  // The whole square is seen: the strategy moves on to another point.
+  reveal(o.gain_half_side_m + 0.05);
+  const Decision next = s.decide({w.grid, w.costmap, robot, 3.0, &w.semantic});
+  ASSERT_EQ(next.status, Decision::Status::kGoal);
+  EXPECT_GT((next.goal_m - first.goal_m).norm(), 0.5);
+  EXPECT_TRUE(w.grid.isUnknown(g.index(g.cellOf(next.goal_m))));
+}
+
 TEST(SemanticExplorerTest, AblationsAreRegisteredWithTheirDefaults) {
   auto sampling = createStrategy("semantic_sampling_only", 1);
   auto scoring = createStrategy("semantic_score_only", 1);

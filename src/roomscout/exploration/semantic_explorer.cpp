@@ -127,6 +127,14 @@ bool SemanticExplorer::stale(const ExplorationInput& input, const Vec2& p) const
   return !input.grid.isUnknown(i) || input.costmap.isLethal(i);
 }
 
+bool SemanticExplorer::goalExplored(const ExplorationInput& input) const {
+  if (blacklisted(goal_m_)) return true;
+  const GridGeometry& g = input.grid.geometry();
+  const Cell c = g.cellOf(goal_m_);
+  if (!g.contains(c) || input.costmap.isLethal(g.index(c))) return true;
+  return squareAreas(input.grid, goal_m_, options_.gain_half_side_m).unknown_m2 < options_.min_unknown_m2;
+}
+
 int SemanticExplorer::roomOf(const ExplorationInput& input, const Vec2& p) const {
   if (input.semantic == nullptr) return 0;
   const SemanticMap& map = *input.semantic;
@@ -353,8 +361,10 @@ Decision SemanticExplorer::decide(const ExplorationInput& input) {
   });
   if (endTest(input)) return Decision::done();
 
-  // The goal's own point was seen: choose again at once.
-  if (has_goal_ && (stale(input, goal_m_) || blacklisted(goal_m_))) has_goal_ = false;
+  // The goal is kept until its square is explored (less than min_unknown_m2 of unknown space
+  // left), not merely until its own cell is seen: the laser's edge recedes as the robot
+  // drives, so the first unknown cell of an edge is seen long before the space behind it.
+  if (has_goal_ && goalExplored(input)) has_goal_ = false;
   const bool periodic = input.time_s - last_eval_s_ >= options_.replan_period_s - 1e-9;
   if (!points_.empty() && (!has_goal_ || periodic)) {
     last_eval_s_ = input.time_s;
@@ -372,10 +382,15 @@ Decision SemanticExplorer::decide(const ExplorationInput& input) {
         best_score = s;
         best = i;
       }
-      if (has_goal_ && (points_[i].p - goal_m_).norm() < 1e-9) goal_score = s;
+    }
+    if (has_goal_) {
+      const SquareAreas a = squareAreas(input.grid, goal_m_, options_.gain_half_side_m);
+      const bool inside = room_ != 0 && roomOf(input, goal_anchor_) == room_;
+      goal_score = score(a.unknown_m2 - a.occupied_m2, (goal_m_ - robot).norm(), inside);
     }
     if (best < points_.size() && (!has_goal_ || best_score > goal_score + options_.switch_margin)) {
       goal_m_ = points_[best].p;
+      goal_anchor_ = points_[best].anchor;
       has_goal_ = true;
     }
   }

@@ -22,8 +22,12 @@
 // outside. Free cells the segmentation has not labelled yet (seen since its last update) take
 // the room of the nearest labelled cell within label_search_m.
 // The best S becomes the goal. It is re-evaluated when the goal is reached or fails, when its
-// point is no longer unknown (seen) or lies in the inflation, and every replan_period_s while
-// driving, when another point beats the goal's own score by switch_margin.
+// square is explored (less than min_unknown_m2 of unknown space left) or its point lies in the
+// inflation, and every replan_period_s while driving, when another point beats the goal's own
+// score by switch_margin. The goal is not dropped as soon as its own cell is seen: the laser's
+// edge recedes in front of the robot, and choosing afresh every time it does made the robot
+// swing between points 3.5 m away in different directions (L98 -10 to -20 %, revisits about
+// halved; docs/semantic_tuning.md, fourth pass).
 //
 // End: as improved_rrt (fewer than end_min_frontier_cells reachable frontier cells in
 // end_checks consecutive checks, each end_check_period_s; cells the robot came within
@@ -57,8 +61,8 @@ struct SemanticExplorerOptions {
   bool geodesic_cost = false;          ///< C = path length through the costmap, not Euclidean
   double eta_m = 1.0;                  ///< tree step [m]
   double iterations_per_s = 100.0;     ///< tree iterations per simulated second
-  double replan_period_s = 0.5;        ///< re-evaluation period while driving [s]
-  double switch_margin = 1.0;          ///< another point must beat the goal's score by this
+  double replan_period_s = 2.0;        ///< re-evaluation period while driving [s]
+  double switch_margin = 6.0;          ///< another point must beat the goal's score by this
   double label_search_m = 0.5;         ///< unlabelled free cells take a room this close [m]
   double blacklist_radius_m = 0.3;     ///< reached or failed goals drop points this close [m]
   double end_check_period_s = 1.0;     ///< period of the end test [s]
@@ -113,6 +117,7 @@ class SemanticExplorer final : public ExplorationStrategy {
   void grow(const ExplorationInput& input, long iterations);
   int roomOf(const ExplorationInput& input, const Vec2& p) const;
   bool stale(const ExplorationInput& input, const Vec2& p) const;
+  bool goalExplored(const ExplorationInput& input) const;
   bool blacklisted(const Vec2& p) const;
   std::vector<double> costs(const ExplorationInput& input) const;
   bool endTest(const ExplorationInput& input);
@@ -137,6 +142,7 @@ class SemanticExplorer final : public ExplorationStrategy {
   std::vector<std::uint8_t> visited_;
   bool has_goal_ = false;
   Vec2 goal_m_ = Vec2::Zero();
+  Vec2 goal_anchor_ = Vec2::Zero();
   bool goal_in_room_ = false;
 };
 
