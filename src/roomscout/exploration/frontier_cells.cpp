@@ -75,28 +75,37 @@ std::optional<Cell> regionStart(const OccupancyGrid& grid, const Costmap& costma
   return start;
 }
 
-/// Depth-first flood fill of the open cells 4-connected to `start`; calls `visit(index)` for
-/// each cell as it is reached and stops early when it returns false.
+/// Scanline flood fill of the open cells 4-connected to `start`: each seed is widened to the
+/// whole open run of its row, and the rows above and below are seeded once per open run along
+/// it. Calls `visit(index)` for each cell as it is reached and stops early when it returns
+/// false. Cells are marked 1 in `region`; cells already non-zero there are not entered.
 template <typename Visit>
 void floodOpenRegion(const OccupancyGrid& grid, const Costmap& costmap, Cell start,
                      std::vector<std::uint8_t>& region, Visit&& visit) {
   const GridGeometry& g = grid.geometry();
-  auto open = [&](std::size_t i) { return grid.isFree(i) && !costmap.isLethal(i); };
-  const int w = g.width();
-  std::vector<std::size_t> stack{g.index(start)};
-  region[stack.back()] = 1;
-  if (!visit(stack.back())) return;
-  while (!stack.empty()) {
-    const std::size_t i = stack.back();
-    stack.pop_back();
-    const Cell q = g.cellAt(i);
-    const std::size_t n[4] = {i + 1, i - 1, i + w, i - w};
-    const bool ok[4] = {q.x + 1 < w, q.x > 0, q.y + 1 < g.height(), q.y > 0};
-    for (int k = 0; k < 4; ++k) {
-      if (ok[k] && !region[n[k]] && open(n[k])) {
-        region[n[k]] = 1;
-        stack.push_back(n[k]);
-        if (!visit(n[k])) return;
+  const int w = g.width(), h = g.height();
+  auto open = [&](std::size_t i) { return region[i] == 0 && grid.isFree(i) && !costmap.isLethal(i); };
+  std::vector<Cell> seeds{start};
+  while (!seeds.empty()) {
+    const Cell s = seeds.back();
+    seeds.pop_back();
+    const std::size_t row = static_cast<std::size_t>(s.y) * w;
+    if (!open(row + s.x)) continue;
+    int x0 = s.x, x1 = s.x;
+    while (x0 > 0 && open(row + x0 - 1)) --x0;
+    while (x1 + 1 < w && open(row + x1 + 1)) ++x1;
+    for (int x = x0; x <= x1; ++x) region[row + x] = 1;
+    for (int x = x0; x <= x1; ++x) {
+      if (!visit(row + x)) return;
+    }
+    for (const int ny : {s.y - 1, s.y + 1}) {
+      if (ny < 0 || ny >= h) continue;
+      const std::size_t nrow = static_cast<std::size_t>(ny) * w;
+      bool in_run = false;
+      for (int x = x0; x <= x1; ++x) {
+        const bool o = open(nrow + x);
+        if (o && !in_run) seeds.push_back({x, ny});
+        in_run = o;
       }
     }
   }

@@ -114,15 +114,17 @@ Decision Mmpf::decide(const ExplorationInput& input) {
   }
   const std::vector<Cluster> clusters = clusterCells(std::move(targets), options_.cluster_l1_cells);
 
-  // Coarse grid: a cell is free when all its map cells are free.
+  // Coarse grid: a cell is free when one of its map cells is free and none is occupied. It
+  // has a border of blocked cells, so the BFS below needs no bounds checks.
   const int f = options_.coarse_factor;
   const int cw = (g.width() + f - 1) / f, ch = (g.height() + f - 1) / f;
-  const std::size_t cn = static_cast<std::size_t>(cw) * ch;
+  const int pw = cw + 2;  // padded row length
+  const std::size_t pn = static_cast<std::size_t>(pw) * (ch + 2);
   // 0: nothing known yet, 1: some free and no occupied map cell, 2: an occupied map cell.
-  free_.assign(cn, 0);
+  free_.assign(pn, 0);
   for (int y = 0; y < g.height(); ++y) {
     const std::size_t row = static_cast<std::size_t>(y) * g.width();
-    const std::size_t crow = static_cast<std::size_t>(y / f) * cw;
+    const std::size_t crow = static_cast<std::size_t>(y / f + 1) * pw + 1;
     for (int x = 0; x < g.width(); ++x) {
       const CellState st = input.grid.state(row + x);
       std::uint8_t& c = free_[crow + x / f];
@@ -132,42 +134,46 @@ Decision Mmpf::decide(const ExplorationInput& input) {
   }
   for (std::uint8_t& c : free_) c = c == 1 ? 1 : 0;
 
-  // Potential from every cluster's BFS distance through free cells.
-  potential_.assign(cn, 0.0f);
-  near_centre_.assign(cn, 0);
-  dist_.assign(cn, -1);
-  std::vector<std::size_t> queue;
-  queue.reserve(cn / 4);
-  std::vector<std::size_t> touched;
+  // Potential from every cluster's BFS distance through free cells, level by level: every
+  // cell of level d adds the same -size / d (computed once per level, as the per-cell division
+  // did, so the sums are bit for bit those of a cell-by-cell BFS in the same cluster order).
+  potential_.assign(pn, 0.0f);
+  near_centre_.assign(pn, 0);
+  if (seen_.size() != pn) seen_.assign(pn, 0);
+  std::vector<std::uint32_t> level, next;
+  level.reserve(1024);
+  next.reserve(1024);
+  const std::ptrdiff_t step[4] = {1, -1, pw, -pw};
   for (const Cluster& cl : clusters) {
-    const std::size_t s = static_cast<std::size_t>(cl.centre.y / f) * cw + cl.centre.x / f;
-    queue.clear();
-    queue.push_back(s);
-    dist_[s] = 0;
-    touched.assign(1, s);
-    for (std::size_t head = 0; head < queue.size(); ++head) {
-      const std::size_t i = queue[head];
-      const int cx = static_cast<int>(i % cw), cy = static_cast<int>(i / cw);
-      const int d = dist_[i] + 1;
-      const std::size_t n[4] = {i + 1, i - 1, i + cw, i - cw};
-      const bool ok[4] = {cx + 1 < cw, cx > 0, cy + 1 < ch, cy > 0};
-      for (int k = 0; k < 4; ++k) {
-        if (!ok[k] || dist_[n[k]] >= 0 || !free_[n[k]]) continue;
-        dist_[n[k]] = d;
-        queue.push_back(n[k]);
-        touched.push_back(n[k]);
-        potential_[n[k]] -= static_cast<float>(cl.size) / static_cast<float>(d);
-        if (d <= 1) near_centre_[n[k]] = 1;
-      }
+    if (++stamp_ == 0) {  // wrapped: clear the marks once
+      std::fill(seen_.begin(), seen_.end(), 0u);
+      stamp_ = 1;
     }
-    for (const std::size_t i : touched) dist_[i] = -1;
+    const std::size_t s = static_cast<std::size_t>(cl.centre.y / f + 1) * pw + cl.centre.x / f + 1;
+    seen_[s] = stamp_;
+    level.assign(1, static_cast<std::uint32_t>(s));
+    for (int d = 1; !level.empty(); ++d) {
+      const float add = static_cast<float>(cl.size) / static_cast<float>(d);
+      next.clear();
+      for (const std::uint32_t i : level) {
+        for (const std::ptrdiff_t o : step) {
+          const std::size_t n = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(i) + o);
+          if (seen_[n] == stamp_ || !free_[n]) continue;
+          seen_[n] = stamp_;
+          next.push_back(static_cast<std::uint32_t>(n));
+          potential_[n] -= add;
+          if (d <= 1) near_centre_[n] = 1;
+        }
+      }
+      level.swap(next);
+    }
   }
 
   // Gradient descent with the river term.
   const Cell rc = g.cellOf(input.robot.position());
   Cell cur{std::clamp(rc.x / f, 0, cw - 1), std::clamp(rc.y / f, 0, ch - 1)};
-  visits_.assign(cn, 0);
-  std::vector<std::size_t> path{static_cast<std::size_t>(cur.y) * cw + cur.x};
+  visits_.assign(pn, 0);
+  std::vector<std::size_t> path{static_cast<std::size_t>(cur.y + 1) * pw + cur.x + 1};
   visits_[path.back()] = 1;
   double current = 1e9;
   double river_gain = 1.0;
@@ -178,7 +184,7 @@ Decision Mmpf::decide(const ExplorationInput& input) {
     for (int k = 0; k < 4; ++k) {
       const Cell a = around[k];
       if (a.x < 0 || a.y < 0 || a.x >= cw || a.y >= ch) continue;
-      const std::size_t i = static_cast<std::size_t>(a.y) * cw + a.x;
+      const std::size_t i = static_cast<std::size_t>(a.y + 1) * pw + a.x + 1;
       const double p = potential_[i] + options_.river_step * river_gain * visits_[i];
       if (p < best) {
         best = p;
@@ -191,7 +197,7 @@ Decision Mmpf::decide(const ExplorationInput& input) {
     // river term keeping it from flowing back.
     if (!(best < current)) river_gain += 1.0;
     cur = around[best_k];
-    const std::size_t i = static_cast<std::size_t>(cur.y) * cw + cur.x;
+    const std::size_t i = static_cast<std::size_t>(cur.y + 1) * pw + cur.x + 1;
     path.push_back(i);
     if (visits_[i] < 60000) ++visits_[i];
     current = best;

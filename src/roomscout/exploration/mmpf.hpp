@@ -82,7 +82,8 @@ class Mmpf final : public ExplorationStrategy {
   // Scratch buffers reused between cycles.
   std::vector<std::uint8_t> free_;
   std::vector<float> potential_;
-  std::vector<int> dist_;
+  std::vector<std::uint32_t> seen_;  ///< BFS marks: the stamp of the cluster that reached a cell
+  std::uint32_t stamp_ = 0;
   std::vector<std::uint16_t> visits_;
   std::vector<std::uint8_t> near_centre_;
 };
