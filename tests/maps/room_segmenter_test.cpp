@@ -30,8 +30,11 @@ TEST(RoomSegmenter, OnlyFreeCellsAreLabelled) {
   const RoomSegmentation seg = RoomSegmenter().segment(m, test::kRes);
   for (int y = 0; y < m.rows; ++y) {
     for (int x = 0; x < m.cols; ++x) {
-      if (m.at<std::uint8_t>(y, x) != test::v(F)) EXPECT_EQ(seg.labels.at<int>(y, x), 0);
-      if (m.at<std::uint8_t>(y, x) == test::v(F)) EXPECT_GT(seg.labels.at<int>(y, x), 0);
+      if (m.at<std::uint8_t>(y, x) != test::v(F)) {
+        EXPECT_EQ(seg.labels.at<int>(y, x), 0);
+      } else {
+        EXPECT_GT(seg.labels.at<int>(y, x), 0);
+      }
     }
   }
 }
@@ -59,7 +62,9 @@ TEST(RoomSegmenter, UnknownSpaceIsNeitherWallNorRoom) {
   const RoomSegmentation seg = RoomSegmenter().segment(m, test::kRes);
   for (int y = 0; y < m.rows; ++y) {
     for (int x = 0; x < m.cols; ++x) {
-      if (m.at<std::uint8_t>(y, x) == test::v(CellState::kUnknown)) EXPECT_EQ(seg.labels.at<int>(y, x), 0);
+      if (m.at<std::uint8_t>(y, x) == test::v(CellState::kUnknown)) {
+        EXPECT_EQ(seg.labels.at<int>(y, x), 0);
+      }
     }
   }
   EXPECT_EQ(seg.room_count, 3);  // two rooms and the corridor seen so far

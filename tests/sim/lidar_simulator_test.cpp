@@ -21,7 +21,7 @@ World furnishedRoom() {
   World w = testing::squareRoom(10.0, 0.2);
   FurniturePiece top{"table_top", {{6.0, 4.5}, {7.0, 4.5}, {7.0, 5.5}, {6.0, 5.5}}, 0.71, 0.75};
   w.furniture.push_back(top);
-  for (const Vec2 c : {Vec2(6.05, 4.55), Vec2(6.95, 4.55), Vec2(6.95, 5.45), Vec2(6.05, 5.45)}) {
+  for (const Vec2& c : {Vec2(6.05, 4.55), Vec2(6.95, 4.55), Vec2(6.95, 5.45), Vec2(6.05, 5.45)}) {
     const Vec2 h(0.025, 0.025);
     w.furniture.push_back({"leg", {c - h, Vec2(c.x() + h.x(), c.y() - h.y()), c + h, Vec2(c.x() - h.x(), c.y() + h.y())},
                            0.0, 0.71});
