@@ -38,29 +38,36 @@ std::vector<Frontier> searchFrontiers(const OccupancyGrid& grid, const Vec2& fro
 
   const int w = g.width();
   const int h = g.height();
-  // One byte per cell: bit 0 free, bit 1 unknown, bit 2 visited, bit 3 frontier.
+  // One byte per cell of the grid framed by one cell of neither free nor unknown space, so that
+  // neighbours need no bounds checks: bit 0 free, bit 1 unknown, bit 2 visited, bit 3 frontier.
   constexpr std::uint8_t kFree = 1, kUnknown = 2, kVisited = 4, kFrontier = 8;
-  std::vector<std::uint8_t> flags(g.cellCount());
-  for (std::size_t i = 0; i < flags.size(); ++i) {
-    const CellState s = grid.state(i);
-    flags[i] = s == CellState::kFree ? kFree : (s == CellState::kUnknown ? kUnknown : 0);
+  const std::ptrdiff_t pw = w + 2;
+  std::vector<std::uint8_t> flags(static_cast<std::size_t>(pw) * (h + 2), 0);
+  for (int y = 0; y < h; ++y) {
+    const std::size_t row = static_cast<std::size_t>(y) * w;
+    std::uint8_t* out = flags.data() + (y + 1) * pw + 1;
+    for (int x = 0; x < w; ++x) {
+      const CellState s = grid.state(row + x);
+      out[x] = s == CellState::kFree ? kFree : (s == CellState::kUnknown ? kUnknown : 0);
+    }
   }
-  auto isNewFrontierCell = [&](int x, int y) {
-    const std::size_t i = static_cast<std::size_t>(y) * w + x;
-    if ((flags[i] & (kUnknown | kFrontier)) != kUnknown) return false;
-    return (x > 0 && (flags[i - 1] & kFree)) || (x + 1 < w && (flags[i + 1] & kFree)) ||
-           (y > 0 && (flags[i - w] & kFree)) || (y + 1 < h && (flags[i + w] & kFree));
+  auto cellOf = [pw](std::ptrdiff_t j) { return Cell{static_cast<int>(j % pw) - 1, static_cast<int>(j / pw) - 1}; };
+  auto isNewFrontierCell = [&](std::ptrdiff_t j) {
+    if ((flags[j] & (kUnknown | kFrontier)) != kUnknown) return false;
+    return ((flags[j - 1] | flags[j + 1] | flags[j - pw] | flags[j + pw]) & kFree) != 0;
   };
 
-  std::vector<Cell> queue;
-  auto buildFrontier = [&](int x0, int y0) {
+  std::vector<std::ptrdiff_t> queue;
+  const std::ptrdiff_t around[8] = {-pw - 1, -pw, -pw + 1, -1, 1, pw - 1, pw, pw + 1};
+  auto buildFrontier = [&](std::ptrdiff_t j0) {
     Frontier f;
-    queue.assign(1, Cell{x0, y0});
-    flags[static_cast<std::size_t>(y0) * w + x0] |= kFrontier;
+    queue.assign(1, j0);
+    flags[j0] |= kFrontier;
     Vec2 sum = Vec2::Zero();
     f.min_distance_m = std::numeric_limits<double>::infinity();
     for (std::size_t head = 0; head < queue.size(); ++head) {
-      const Cell c = queue[head];
+      const std::ptrdiff_t j = queue[head];
+      const Cell c = cellOf(j);
       f.cells.push_back(c);
       const Vec2 p = g.centerOf(c);
       sum += p;
@@ -69,14 +76,10 @@ std::vector<Frontier> searchFrontiers(const OccupancyGrid& grid, const Vec2& fro
         f.min_distance_m = d;
         f.nearest_m = p;
       }
-      for (int dy = -1; dy <= 1; ++dy) {
-        for (int dx = -1; dx <= 1; ++dx) {
-          const int nx = c.x + dx, ny = c.y + dy;
-          if ((dx == 0 && dy == 0) || nx < 0 || ny < 0 || nx >= w || ny >= h) continue;
-          if (isNewFrontierCell(nx, ny)) {
-            flags[static_cast<std::size_t>(ny) * w + nx] |= kFrontier;
-            queue.push_back({nx, ny});
-          }
+      for (const std::ptrdiff_t o : around) {
+        if (isNewFrontierCell(j + o)) {
+          flags[j + o] |= kFrontier;
+          queue.push_back(j + o);
         }
       }
     }
@@ -84,22 +87,22 @@ std::vector<Frontier> searchFrontiers(const OccupancyGrid& grid, const Vec2& fro
     return f;
   };
 
-  std::vector<std::size_t> bfs{*start};
-  flags[*start] |= kVisited;
+  const Cell sc = g.cellAt(*start);
+  const std::ptrdiff_t s0 = (sc.y + 1) * pw + sc.x + 1;
+  std::vector<std::ptrdiff_t> bfs{s0};
+  flags[s0] |= kVisited;
+  const std::ptrdiff_t nbr[4] = {-1, 1, -pw, pw};
   for (std::size_t head = 0; head < bfs.size(); ++head) {
-    const std::size_t i = bfs[head];
-    const int x = static_cast<int>(i % w), y = static_cast<int>(i / w);
-    const int nbr[4][2] = {{x - 1, y}, {x + 1, y}, {x, y - 1}, {x, y + 1}};
-    for (const auto& n : nbr) {
-      if (n[0] < 0 || n[1] < 0 || n[0] >= w || n[1] >= h) continue;
-      const std::size_t j = static_cast<std::size_t>(n[1]) * w + n[0];
+    const std::ptrdiff_t i = bfs[head];
+    for (const std::ptrdiff_t o : nbr) {
+      const std::ptrdiff_t j = i + o;
       if (flags[j] & kFree) {
         if (!(flags[j] & kVisited)) {
           flags[j] |= kVisited;
           bfs.push_back(j);
         }
-      } else if (isNewFrontierCell(n[0], n[1])) {
-        Frontier f = buildFrontier(n[0], n[1]);
+      } else if (isNewFrontierCell(j)) {
+        Frontier f = buildFrontier(j);
         if (f.size() >= min_cells) frontiers.push_back(std::move(f));
       }
     }
