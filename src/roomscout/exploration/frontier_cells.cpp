@@ -237,4 +237,67 @@ std::optional<Vec2> nearestGoalCell(const OccupancyGrid& grid, const Costmap& co
   return g.centerOf(*best);
 }
 
+void markUnknownPockets(std::vector<std::uint8_t>& exhausted, const OccupancyGrid& grid, const Costmap& costmap,
+                        const std::vector<Cell>& cells, double min_area_m2, double min_opening_m) {
+  const GridGeometry& g = grid.geometry();
+  if (exhausted.size() != g.cellCount()) exhausted.assign(g.cellCount(), 0);
+  if (cells.empty()) return;
+  const double res = g.resolution_m();
+  const std::size_t min_cells = static_cast<std::size_t>(std::ceil(min_area_m2 / (res * res)));
+  // 0: reaching the border does not make a component large.
+  const std::size_t min_border_cells =
+      min_opening_m > 0.0 ? static_cast<std::size_t>(std::max(1.0, std::ceil(min_opening_m / res - 1e-9)))
+                          : std::numeric_limits<std::size_t>::max();
+  // The bounding box of the known cells, one cell wider: the unknown beyond it is taken to be
+  // outside the outer walls (with min_opening_m > 0: unless the component reaches the box's
+  // border through an opening at least that wide, as a corridor leading on would).
+  Vec2 box_min, box_max;
+  knownCellsBox(grid, g.centerOf(cells.front()), box_min, box_max);
+  const int x0 = std::max(0, static_cast<int>(std::floor((box_min.x() - g.origin_m().x()) / res)) - 1);
+  const int y0 = std::max(0, static_cast<int>(std::floor((box_min.y() - g.origin_m().y()) / res)) - 1);
+  const int x1 = std::min(g.width() - 1, static_cast<int>(std::ceil((box_max.x() - g.origin_m().x()) / res)));
+  const int y1 = std::min(g.height() - 1, static_cast<int>(std::ceil((box_max.y() - g.origin_m().y()) / res)));
+  const int w = g.width();
+  auto open = [&](int x, int y) {
+    if (x < x0 || y < y0 || x > x1 || y > y1) return false;
+    const std::size_t i = static_cast<std::size_t>(y) * w + x;
+    return grid.isUnknown(i) && !costmap.isLethal(i);
+  };
+  // Components of open cells, labelled 1, 2, ...; a fill stops at min_cells (the component is
+  // large) or when it meets a component already found large.
+  std::vector<std::uint32_t> label(g.cellCount(), 0);
+  std::vector<std::uint8_t> large{0};
+  std::vector<Cell> stack;
+  for (const Cell& f : cells) {
+    const std::size_t fi = g.index(f);
+    if (label[fi] != 0 || !open(f.x, f.y)) continue;
+    const auto id = static_cast<std::uint32_t>(large.size());
+    large.push_back(0);
+    label[fi] = id;
+    stack.assign(1, f);
+    std::size_t n = 0, border = 0;
+    while (!stack.empty() && !large[id]) {
+      const Cell q = stack.back();
+      stack.pop_back();
+      if (q.x == x0 || q.y == y0 || q.x == x1 || q.y == y1) ++border;
+      if (++n >= min_cells || border >= min_border_cells) large[id] = 1;
+      for (int k = 0; k < 4 && !large[id]; ++k) {
+        const int x = q.x + kDx[k], y = q.y + kDy[k];  // order does not matter here
+        if (!open(x, y)) continue;
+        const std::size_t j = static_cast<std::size_t>(y) * w + x;
+        if (label[j] == 0) {
+          label[j] = id;
+          stack.push_back({x, y});
+        } else if (label[j] != id) {
+          large[id] = 1;  // a fill that stopped early: only large components do
+        }
+      }
+    }
+  }
+  for (const Cell& f : cells) {
+    const std::size_t fi = g.index(f);
+    if (label[fi] == 0 || !large[label[fi]]) exhausted[fi] = 1;
+  }
+}
+
 }  // namespace roomscout

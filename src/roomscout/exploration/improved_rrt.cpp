@@ -27,6 +27,10 @@ void ImprovedRrtOptions::validate() const {
   if (!(blacklist_radius_m >= 0.0)) throw OptionError("improved_rrt.blacklist_radius_m must be >= 0");
   if (!(observed_radius_m >= 0.0)) throw OptionError("improved_rrt.observed_radius_m must be >= 0");
   if (max_iterations_per_call < 1) throw OptionError("improved_rrt.max_iterations_per_call must be >= 1");
+  if (!(min_unknown_area_m2 >= 0.0) || !(min_opening_m >= 0.0)) {
+    throw OptionError("improved_rrt: min_unknown_area_m2 and min_opening_m must be >= 0");
+  }
+  if (!positive(pocket_check_period_s)) throw OptionError("improved_rrt.pocket_check_period_s must be > 0");
 }
 
 std::vector<ParameterRef> ImprovedRrtOptions::parameters() {
@@ -49,6 +53,9 @@ std::vector<ParameterRef> ImprovedRrtOptions::parameters() {
       {"observed_radius_m", &observed_radius_m, "end test: frontier cells still unknown this close to the robot are ignored [m]"},
       {"unsigned_count_quirk", &unsigned_count_quirk, "also select whenever points were removed since the last selection (the original's unsigned difference)"},
       {"max_iterations_per_call", &max_iterations_per_call, "cap on iterations run in one call"},
+      {"min_unknown_area_m2", &min_unknown_area_m2, "end test: frontier cells with less unknown, non-lethal area behind them (inside the known box) are ignored [m^2]"},
+      {"min_opening_m", &min_opening_m, "end test: unknown space leaving the known box through an opening this wide is no pocket [m] (0: off)"},
+      {"pocket_check_period_s", &pocket_check_period_s, "period of the end test's pocket search [s]"},
   };
 }
 
@@ -105,6 +112,19 @@ ImprovedRrt::ImprovedRrt(std::uint64_t seed, const ImprovedRrtOptions& options)
 
 ImprovedRrt::~ImprovedRrt() = default;
 
+template <typename Pred>
+void ImprovedRrt::eraseFrontiers(Pred&& pred) {
+  std::erase_if(frontiers_, pred);
+  held_ = 0;
+  previous_index_ = -1;
+  for (std::size_t i = 0; i < frontiers_.size(); ++i) {
+    held_ += frontiers_[i].copies;
+    if (has_previous_ && previous_index_ < 0 && frontiers_[i].p == previous_goal_m_) {
+      previous_index_ = static_cast<long>(i);
+    }
+  }
+}
+
 bool ImprovedRrt::blacklisted(const Vec2& p) const {
   const double r2 = options_.blacklist_radius_m * options_.blacklist_radius_m;
   return std::any_of(blacklist_.begin(), blacklist_.end(), [&](const Vec2& b) { return (b - p).squaredNorm() < r2; });
@@ -117,7 +137,7 @@ void ImprovedRrt::onGoalFailed(const Vec2& goal_m) {
   // cannot be seen from it (behind a wall), and a failed one cannot be reached.
   if (goal_active_ && (goal_m - previous_goal_m_).norm() < 1e-9) {
     blacklist_.push_back(goal_m);
-    std::erase_if(frontiers_, [&](const Point& f) { return blacklisted(f.p); });
+    eraseFrontiers([&](const Point& f) { return blacklisted(f.p); });
   }
   goal_active_ = false;
 }
@@ -135,9 +155,20 @@ ImprovedRrt::Step ImprovedRrt::iterate(const ExplorationInput& input, const RrtT
   if (++iterations_since_end_check_ >= options_.end_check_iterations) {
     const Vec2 robot_m = input.robot.position();
     iterations_since_end_check_ = 0;
-    const std::size_t cells =
-        countReachableFrontierCells(input.grid, input.costmap, options_.end_obstacle_l1_cells, &visited_,
-                                    robot_m, static_cast<std::size_t>(options_.end_min_frontier_cells));
+    const auto count = [&] {
+      return countReachableFrontierCells(input.grid, input.costmap, options_.end_obstacle_l1_cells, &visited_,
+                                         robot_m, static_cast<std::size_t>(options_.end_min_frontier_cells));
+    };
+    std::size_t cells = count();
+    if (cells >= static_cast<std::size_t>(options_.end_min_frontier_cells) &&
+        input.time_s - last_pocket_check_s_ >= options_.pocket_check_period_s - 1e-9) {
+      last_pocket_check_s_ = input.time_s;
+      const std::vector<Cell> all =
+          reachableFrontierCells(input.grid, input.costmap, options_.end_obstacle_l1_cells, &visited_, &robot_m);
+      markUnknownPockets(visited_, input.grid, input.costmap, all, options_.min_unknown_area_m2,
+                         options_.min_opening_m);
+      cells = count();
+    }
     if (cells < static_cast<std::size_t>(options_.end_min_frontier_cells)) {
       if (++failed_end_checks_ >= options_.end_checks) return Step::kDone;
       return Step::kContinue;
@@ -145,15 +176,26 @@ ImprovedRrt::Step ImprovedRrt::iterate(const ExplorationInput& input, const RrtT
     failed_end_checks_ = 0;
   }
 
+  // The original appends the new point and the previous goal, then drops every stale point.
+  // The grid does not change within a call and decide() dropped the stale points before the
+  // first iteration, so only the appended ones need the test; the previous goal's copies are
+  // counted on its entry instead of stored (see Point::copies).
   const RrtExtension e = tree_->grow(input.grid, sampler, rng_);
-  if (e.status == EdgeStatus::kFrontier && !blacklisted(e.new_m)) frontiers_.push_back({e.new_m});
+  if (e.status == EdgeStatus::kFrontier && !blacklisted(e.new_m) && !stale(input, e.new_m)) {
+    frontiers_.push_back({e.new_m});
+    ++held_;
+  }
   ++iterations_since_selection_;
   if (has_previous_ && !stale(input, previous_goal_m_) && !blacklisted(previous_goal_m_)) {
-    frontiers_.push_back({previous_goal_m_});
+    if (previous_index_ < 0) {
+      previous_index_ = static_cast<long>(frontiers_.size());
+      frontiers_.push_back({previous_goal_m_, 0});
+    }
+    ++frontiers_[static_cast<std::size_t>(previous_index_)].copies;
+    ++held_;
   }
-  std::erase_if(frontiers_, [&](const Point& f) { return stale(input, f.p); });
 
-  const long held = static_cast<long>(frontiers_.size());
+  const long held = held_;
   // The original's unsigned difference: fewer points than after the last selection also fires.
   const bool more = held - selected_count_ > options_.new_points_trigger ||
                     (options_.unsigned_count_quirk && held < selected_count_);
@@ -166,7 +208,7 @@ void ImprovedRrt::select(const ExplorationInput& input) {
   const GridGeometry& g = input.grid.geometry();
   const double res = g.resolution_m();
   // Points whose four neighbours are all unknown lie outside the valid map.
-  std::erase_if(frontiers_, [&](const Point& f) {
+  eraseFrontiers([&](const Point& f) {
     const Vec2 offsets[4] = {{res, 0}, {0, res}, {-res, 0}, {0, -res}};
     for (const Vec2& o : offsets) {
       const Cell c = g.cellOf(f.p + o);
@@ -174,7 +216,7 @@ void ImprovedRrt::select(const ExplorationInput& input) {
     }
     return true;
   });
-  selected_count_ = static_cast<long>(frontiers_.size());
+  selected_count_ = held_;
   if (frontiers_.empty()) return;
 
   const Vec2 robot = input.robot.position();
@@ -202,6 +244,7 @@ void ImprovedRrt::select(const ExplorationInput& input) {
   const double l1 = std::abs(best->p.x() - previous_goal_m_.x()) + std::abs(best->p.y() - previous_goal_m_.y());
   if (has_previous_ && l1 < options_.min_goal_change_cells * res) return;
   previous_goal_m_ = best->p;
+  previous_index_ = best - frontiers_.data();
   has_previous_ = true;
   goal_active_ = true;
 }
@@ -229,6 +272,7 @@ Decision ImprovedRrt::decide(const ExplorationInput& input) {
     Vec2 box_min, box_max;
     knownCellsBox(input.grid, robot, box_min, box_max);
     const RrtTree::Sampler sampler = uniformBoxSampler(box_min, box_max);
+    eraseFrontiers([&](const Point& f) { return stale(input, f.p); });
     for (long k = 0; k < n; ++k) {
       if (iterate(input, sampler) == Step::kDone) return Decision::done();
     }

@@ -32,6 +32,16 @@
 //   point scores better, which a point whose unknown square lies behind a wall may never allow;
 // - the end test ignores frontier cells that stayed unknown while the robot was within
 //   observed_radius_m of them (see markDisc): our laser never marks a few furniture-face cells;
+//   and every pocket_check_period_s it also ignores frontier cells that open onto a pocket of
+//   unknown space (see markUnknownPockets in frontier_cells.hpp): on large_office hundreds of
+//   such cells (furniture interiors, wall cracks) remain at 99 %, the detector never sends the
+//   robot to look into them, and the test never passed;
+// - the previous goal, which the original appends to its point list on every iteration while
+//   it stays unknown, is stored once with a count of its copies, and stale points are dropped
+//   once per decide() call (the grid does not change within a call) and on arrival, instead
+//   of an erase over the whole list every iteration. The counts, the list order (first copy)
+//   and so every decision are the original's; only the wall time changes (large_office: the
+//   list grew to thousands of copies, 300-380 s per episode).
 // - after reaching its goal the robot waits in place (a goal at the nearest non-lethal cell)
 //   until the next selection, as the original idles.
 
@@ -66,6 +76,11 @@ struct ImprovedRrtOptions {
   bool unsigned_count_quirk = false; ///< reproduce the original's unsigned point count: a
                                      ///< selection also whenever points were removed
   int max_iterations_per_call = 20000;  ///< cap on owed iterations run in one call
+  double min_unknown_area_m2 = 4.0;  ///< end test ignores frontier cells with less unknown,
+                                     ///< non-lethal area behind them (see markUnknownPockets) [m^2]
+  double min_opening_m = 0.4;        ///< ... and fewer than this on the known box's border
+                                     ///< [m]; 0: the border does not matter (unsafe, see rrt)
+  double pocket_check_period_s = 10.0;  ///< period of that pocket search (a full-map scan) [s]
 
   void validate() const;
   std::vector<ParameterRef> parameters();
@@ -86,12 +101,17 @@ class ImprovedRrt final : public ExplorationStrategy {
   std::vector<ParameterRef> parameters() override { return options_.parameters(); }
   void validateOptions() const override { options_.validate(); }
 
-  /// Frontier points currently held (for tests and visualisation).
-  std::size_t frontierCount() const { return frontiers_.size(); }
+  /// Frontier points currently held, counting the previous goal's copies (for tests and
+  /// visualisation).
+  std::size_t frontierCount() const { return static_cast<std::size_t>(held_); }
+  /// Distinct frontier points currently held.
+  std::size_t distinctFrontierCount() const { return frontiers_.size(); }
 
  private:
   struct Point {
     Vec2 p;
+    long copies = 1;        ///< times the original's list holds this point: the previous goal
+                            ///< is appended again every iteration while it stays unknown
     double gain_m2 = 0.0;   ///< G cached for the call `gain_call`
     std::uint64_t gain_call = 0;
   };
@@ -100,6 +120,9 @@ class ImprovedRrt final : public ExplorationStrategy {
   void select(const ExplorationInput& input);
   bool blacklisted(const Vec2& p) const;
   bool stale(const ExplorationInput& input, const Vec2& p) const;
+  /// erase_if over frontiers_ that keeps held_ and previous_index_ up to date.
+  template <typename Pred>
+  void eraseFrontiers(Pred&& pred);
 
   ImprovedRrtOptions options_;
   std::mt19937_64 rng_;
@@ -109,8 +132,11 @@ class ImprovedRrt final : public ExplorationStrategy {
   long iterations_since_selection_ = 0;
   long iterations_since_end_check_ = 0;
   int failed_end_checks_ = 0;
+  double last_pocket_check_s_ = -1e300;
   long selected_count_ = 0;            ///< points held right after the last selection
   std::vector<Point> frontiers_;
+  long held_ = 0;                      ///< sum of frontiers_[i].copies
+  long previous_index_ = -1;           ///< entry of previous_goal_m_ in frontiers_, if any
   std::vector<std::uint8_t> visited_;  ///< cells the robot came within observed_radius_m of
   std::vector<Vec2> blacklist_;
   std::unique_ptr<GainTable> gain_table_;  ///< built at most once per call, when needed

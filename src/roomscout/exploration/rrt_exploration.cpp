@@ -27,6 +27,10 @@ void RrtExplorationOptions::validate() const {
   if (!(observed_radius_m >= 0.0)) throw OptionError("rrt.observed_radius_m must be >= 0");
   if (max_samples_per_call < 1) throw OptionError("rrt.max_samples_per_call must be >= 1");
   if (!positive(idle_end_s)) throw OptionError("rrt.idle_end_s must be > 0");
+  if (!(min_unknown_area_m2 >= 0.0) || !(min_opening_m >= 0.0)) {
+    throw OptionError("rrt: min_unknown_area_m2 and min_opening_m must be >= 0");
+  }
+  if (!positive(pocket_check_period_s)) throw OptionError("rrt.pocket_check_period_s must be > 0");
 }
 
 std::vector<ParameterRef> RrtExplorationOptions::parameters() {
@@ -48,6 +52,9 @@ std::vector<ParameterRef> RrtExplorationOptions::parameters() {
       {"observed_radius_m", &observed_radius_m, "end test: frontier cells still unknown this close to the robot are ignored [m]"},
       {"max_samples_per_call", &max_samples_per_call, "cap on samples grown in one call, per tree"},
       {"idle_end_s", &idle_end_s, "exploration ends after this long with no assignable centroid [s]"},
+      {"min_unknown_area_m2", &min_unknown_area_m2, "end test: frontier cells with less unknown, non-lethal area behind them (inside the known box) are ignored [m^2]"},
+      {"min_opening_m", &min_opening_m, "end test: unknown space leaving the known box through an opening this wide is no pocket [m] (0: off)"},
+      {"pocket_check_period_s", &pocket_check_period_s, "period of the end test's pocket search [s]"},
   };
 }
 
@@ -126,6 +133,7 @@ std::vector<Vec2> meanShift(const std::vector<Vec2>& points, double bandwidth_m)
 }
 
 }  // namespace
+
 
 RrtExploration::RrtExploration(std::uint64_t seed, const RrtExplorationOptions& options)
     : options_(options), rng_(seed) {}
@@ -206,8 +214,19 @@ Decision RrtExploration::decide(const ExplorationInput& input) {
   const Vec2 robot_m = input.robot.position();
   if (input.time_s - last_end_check_s_ >= options_.end_check_period_s - 1e-9) {
     last_end_check_s_ = input.time_s;
-    const std::size_t cells = countReachableFrontierCells(
-        input.grid, input.costmap, 4, &visited_, robot_m, static_cast<std::size_t>(options_.end_min_frontier_cells));
+    const auto count = [&] {
+      return countReachableFrontierCells(input.grid, input.costmap, 4, &visited_, robot_m,
+                                         static_cast<std::size_t>(options_.end_min_frontier_cells));
+    };
+    std::size_t cells = count();
+    if (cells >= static_cast<std::size_t>(options_.end_min_frontier_cells) &&
+        input.time_s - last_pocket_check_s_ >= options_.pocket_check_period_s - 1e-9) {
+      last_pocket_check_s_ = input.time_s;
+      const std::vector<Cell> all = reachableFrontierCells(input.grid, input.costmap, 4, &visited_, &robot_m);
+      markUnknownPockets(visited_, input.grid, input.costmap, all, options_.min_unknown_area_m2,
+                         options_.min_opening_m);
+      cells = count();
+    }
     if (cells < static_cast<std::size_t>(options_.end_min_frontier_cells)) {
       if (++failed_end_checks_ >= options_.end_checks) return Decision::done();
     } else {
@@ -221,9 +240,13 @@ Decision RrtExploration::decide(const ExplorationInput& input) {
   const Vec2* best = nullptr;
   for (const Vec2& c : centroids_) {
     if (blacklisted(c)) continue;
-    double ig = unknownAreaInDisc(input.grid, c, options_.info_radius_m);
+    const double area = unknownAreaInDisc(input.grid, c, options_.info_radius_m);
+    double ig = area;
     const double d = (c - robot).norm();
     if (d <= options_.hysteresis_radius_m) ig *= options_.hysteresis_gain;
+    // The original's busy robot: centroids near the goal it is driving to get the bonus too,
+    // so that it does not flip between goals of similar revenue on the way.
+    if (has_goal_ && (c - goal_m_).norm() < options_.hysteresis_radius_m) ig = area * options_.hysteresis_gain;
     const double revenue = options_.info_multiplier * ig - d;
     if (revenue > best_revenue) {
       best_revenue = revenue;

@@ -13,7 +13,11 @@
 // - assigner: IG = unknown area in a disc of info_radius (1 m), doubled when the Euclidean
 //   distance d <= hysteresis_radius (3 m); revenue = info_multiplier (3) * IG - d; the
 //   centroid of highest revenue is the goal, re-assigned every 0.5 s (the original assigner's
-//   delay_after_assignment) whether or not the robot is busy, as the original does.
+//   delay_after_assignment) whether or not the robot is busy, as the original does; while the
+//   robot is busy (driving to a goal), centroids closer than hysteresis_radius to that goal
+//   get IG = unknown area * hysteresis_gain as well (the original's branch for busy robots;
+//   without it the robot flipped between two goals of similar revenue every second and
+//   dithered in place for minutes on large_office).
 //
 // Deliberate deviations:
 // - the original samples 100 points per wall-clock second per tree; here the rate is per
@@ -26,13 +30,23 @@
 //   observed_radius_m of them are ignored (see markDisc); and, because a couple of wall-face
 //   cells no beam ever marks can keep that count at 2 forever, exploration also ends when
 //   the filter has offered no assignable centroid for idle_end_s while the trees kept growing;
+//   and every pocket_check_period_s the end test also ignores frontier cells that open onto a
+//   pocket of unknown space (see markUnknownPockets: furniture interiors and wall cracks our
+//   laser never sees into, the outside seen through a crack in an outer wall): on
+//   large_office hundreds of such cells remain at 99 % and neither detector ever sends the
+//   robot to look into them, so without this the test never passed (with it, it still often
+//   does not there: strips along outer walls no beam reached open onto the known box's
+//   border, and min_opening_m keeps those, as it must keep a corridor's frontier);
 // - the filter drops a centroid when its costmap cell is lethal (the original: cost above a
 //   threshold of 70 on ROS's 0-100 costmap scale; our costmap has no such scale);
 // - goals that were reached or whose path failed are blacklisted (no centroid within
 //   blacklist_radius_m of one is assigned again); the original re-sends them, and a centroid
 //   whose unknown disc lies behind a wall keeps the robot parked on it forever;
-// - the assigner's multi-robot discount of centroids near other robots' goals is left out
-//   (one robot);
+// - the assigner's discount is left out: for every robot it subtracts 1 (a cell, from an area
+//   in m^2) from the IG of each centroid per unknown cell their info discs share with the
+//   robot's assigned point; with one robot that only hits centroids within 2 info_radius of
+//   its own goal, which the busy branch above overrides while it drives there, and the
+//   blacklist stands in for it once the goal is reached or failed;
 // - with no centroid and no goal left, the robot waits where it is (a goal at the nearest
 //   non-lethal cell) while the trees grow.
 
@@ -66,10 +80,17 @@ struct RrtExplorationOptions {
                                        ///< with the robot this close (see markDisc) [m]
   int max_samples_per_call = 20000;    ///< cap on owed samples grown in one call (per tree)
   double idle_end_s = 30.0;            ///< no assignable centroid for this long ends exploration [s]
+  double min_unknown_area_m2 = 4.0;    ///< end test ignores frontier cells with less unknown,
+                                       ///< non-lethal area behind them (see markUnknownPockets) [m^2]
+  double min_opening_m = 0.4;          ///< ... and fewer than this on the known box's border
+                                       ///< [m]; 0: the border does not matter (unsafe: a
+                                       ///< corridor's frontier at the box's edge is a pocket)
+  double pocket_check_period_s = 10.0; ///< period of that pocket search (a full-map scan) [s]
 
   void validate() const;
   std::vector<ParameterRef> parameters();
 };
+
 
 class RrtExploration final : public ExplorationStrategy {
  public:
@@ -100,6 +121,7 @@ class RrtExploration final : public ExplorationStrategy {
   RrtTree::Sampler sampler_;
   double grown_until_s_ = 0.0;
   double last_end_check_s_ = 0.0;
+  double last_pocket_check_s_ = -1e300;
   int failed_end_checks_ = 0;
   std::vector<Vec2> detected_;   ///< frontier points detected since the last filter cycle
   std::vector<Vec2> centroids_;  ///< the filter's output, re-clustered each cycle

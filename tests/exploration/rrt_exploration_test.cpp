@@ -1,0 +1,133 @@
+// End tests of the rrt and improved_rrt baselines on small hand-made maps: frontier cells that
+// open onto a pocket of unknown space (the interior of a piece of furniture seen through a face
+// cell the laser never marked) do not keep exploration going; a doorway to unknown space does.
+
+#include <gtest/gtest.h>
+
+#include <memory>
+
+#include "roomscout/exploration/frontier_cells.hpp"
+#include "roomscout/exploration/improved_rrt.hpp"
+#include "roomscout/exploration/rrt_exploration.hpp"
+
+namespace roomscout {
+namespace {
+
+void fill(OccupancyGrid& grid, int x0, int y0, int x1, int y1, CellState s) {
+  for (int y = y0; y < y1; ++y) {
+    for (int x = x0; x < x1; ++x) grid.setState(grid.geometry().index(Cell{x, y}), s);
+  }
+}
+
+/// A closed room (cells x 5..69, y 5..59 free, walls around) holding a cabinet whose unknown
+/// interior shows through a 0.5 m crack in its bottom face; with `doorway`, the right wall
+/// has a 1 m opening onto unknown space beyond the known map.
+OccupancyGrid roomWithCrackedCabinet(bool doorway) {
+  OccupancyGrid grid(GridGeometry({0.0, 0.0}, 0.05, 90, 70));
+  fill(grid, 0, 0, 90, 70, CellState::kUnknown);
+  fill(grid, 4, 4, 71, 61, CellState::kOccupied);
+  fill(grid, 5, 5, 70, 60, CellState::kFree);
+  fill(grid, 20, 20, 40, 40, CellState::kOccupied);  // cabinet
+  fill(grid, 21, 21, 39, 39, CellState::kUnknown);   // its interior
+  fill(grid, 28, 20, 38, 21, CellState::kUnknown);   // the crack in its face
+  if (doorway) fill(grid, 70, 25, 71, 45, CellState::kUnknown);
+  return grid;
+}
+
+const Vec2 kRobot(3.0, 2.5);  // cell (60, 50): far from the crack and the doorway
+
+TEST(MarkUnknownPocketsTest, CrackIntoFurnitureIsAPocketDoorwayIsNot) {
+  const OccupancyGrid grid = roomWithCrackedCabinet(true);
+  Costmap costmap;
+  costmap.update(grid);
+  const std::vector<Cell> cells = reachableFrontierCells(grid, costmap, 4, nullptr, &kRobot);
+  int crack = 0, door = 0;
+  for (const Cell& c : cells) (c.x == 70 ? door : crack) += 1;
+  ASSERT_GE(crack, 2);  // without the pocket rule these alone fail SMMR's end test forever
+  ASSERT_GE(door, 2);
+  std::vector<std::uint8_t> exhausted;
+  markUnknownPockets(exhausted, grid, costmap, cells, 4.0, 0.4);
+  for (const Cell& c : cells) {
+    EXPECT_EQ(exhausted[grid.geometry().index(c)] != 0, c.x != 70) << "cell " << c.x << ", " << c.y;
+  }
+  // An area threshold of zero keeps every frontier cell.
+  std::vector<std::uint8_t> none;
+  markUnknownPockets(none, grid, costmap, cells, 0.0, 0.4);
+  for (const Cell& c : cells) EXPECT_EQ(none[grid.geometry().index(c)], 0);
+  // A doorway narrower than the opening threshold leads nowhere the end test cares about, and
+  // with the opening rule off unknown space beyond the known box counts as outside (which
+  // ended rrt at 32 % on small_house, seed 3: hence the default of 0.4 m).
+  for (const double opening_m : {2.0, 0.0}) {
+    std::vector<std::uint8_t> narrow;
+    markUnknownPockets(narrow, grid, costmap, cells, 4.0, opening_m);
+    for (const Cell& c : cells) EXPECT_NE(narrow[grid.geometry().index(c)], 0);
+  }
+}
+
+/// Calls decide() every 0.25 s of simulated time on a fixed map; the time of the first
+/// Decision::done(), or a negative value if none came within `limit_s`.
+double timeToDone(ExplorationStrategy& strategy, const OccupancyGrid& grid, double limit_s) {
+  Costmap costmap;
+  costmap.update(grid);
+  for (double t = 0.0; t <= limit_s; t += 0.25) {
+    const ExplorationInput input{grid, costmap, Pose2(kRobot.x(), kRobot.y(), 0.0), t};
+    if (strategy.decide(input).status == Decision::Status::kDone) return t;
+  }
+  return -1.0;
+}
+
+TEST(RrtEndTest, EndsWhenOnlyPocketsAreLeft) {
+  const OccupancyGrid grid = roomWithCrackedCabinet(false);
+  RrtExploration rrt(1);
+  const double t = timeToDone(rrt, grid, 20.0);
+  EXPECT_GE(t, 4.0);  // five failing end tests, one per second
+  EXPECT_LE(t, 8.0);
+  // The same map with the pocket rule off: the crack keeps the end test failing (and the
+  // detectors keep offering centroids on the cabinet, so the idle end does not come either).
+  RrtExplorationOptions off;
+  off.min_unknown_area_m2 = 0.0;
+  RrtExploration original(1, off);
+  EXPECT_LT(timeToDone(original, grid, 20.0), 0.0);
+}
+
+TEST(RrtEndTest, KeepsGoingWhileADoorwayLeadsOn) {
+  RrtExploration rrt(1);
+  EXPECT_LT(timeToDone(rrt, roomWithCrackedCabinet(true), 20.0), 0.0);
+}
+
+TEST(ImprovedRrtEndTest, EndsWhenOnlyPocketsAreLeft) {
+  const OccupancyGrid grid = roomWithCrackedCabinet(false);
+  ImprovedRrt rrt(1);
+  const double t = timeToDone(rrt, grid, 20.0);
+  EXPECT_GE(t, 4.0);
+  EXPECT_LE(t, 8.0);
+  ImprovedRrtOptions off;
+  off.min_unknown_area_m2 = 0.0;
+  ImprovedRrt original(1, off);
+  EXPECT_LT(timeToDone(original, grid, 20.0), 0.0);
+}
+
+TEST(ImprovedRrtEndTest, KeepsGoingWhileADoorwayLeadsOn) {
+  ImprovedRrt rrt(1);
+  EXPECT_LT(timeToDone(rrt, roomWithCrackedCabinet(true), 20.0), 0.0);
+}
+
+// The previous goal is appended to the original's point list on every iteration while it stays
+// unknown; we count those copies on its entry instead of storing them.
+TEST(ImprovedRrtTest, PreviousGoalCopiesAreCountedNotStored) {
+  const OccupancyGrid grid = roomWithCrackedCabinet(true);
+  Costmap costmap;
+  costmap.update(grid);
+  ImprovedRrtOptions options;
+  options.min_unknown_area_m2 = 0.0;
+  ImprovedRrt rrt(3, options);
+  for (double t = 0.0; t <= 20.0; t += 0.25) {
+    rrt.decide(ExplorationInput{grid, costmap, Pose2(kRobot.x(), kRobot.y(), 0.0), t});
+  }
+  // 2000 iterations: the copies make up most of the count, the distinct points stay few.
+  EXPECT_GT(rrt.frontierCount(), 1000u);
+  EXPECT_LT(rrt.distinctFrontierCount(), rrt.frontierCount() / 4);
+}
+
+}  // namespace
+}  // namespace roomscout
