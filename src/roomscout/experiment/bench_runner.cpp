@@ -173,9 +173,10 @@ BenchSummary runBench(const BenchOptions& options,
       }
       if (!keep_outputs) {
         std::error_code ec;
+        // Only the episode's own folder: removing its emptied parents here raced with another
+        // worker creating a sibling under them ("cannot create directory"); the empty
+        // parents go once every worker has finished.
         fs::remove_all(dir, ec);
-        removeEmptyDirectory(dir.parent_path());
-        removeEmptyDirectory(dir.parent_path().parent_path());
       }
       {
         const std::lock_guard<std::mutex> lock(mutex);
