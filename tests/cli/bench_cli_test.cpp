@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "two_room_map.hpp"
 #include "roomscout/experiment/result_record.hpp"
 
 namespace fs = std::filesystem;
@@ -27,7 +28,7 @@ class BenchCliTest : public ::testing::Test {
     dir_ = fs::temp_directory_path() /
            ("roomscout_bench_cli_" + std::to_string(std::random_device{}()));
     fs::create_directories(dir_ / "tiny");
-    writeTwoRoomMap();
+    roomscout::test::writeTwoRoomMap(dir_ / "tiny");
   }
   void TearDown() override { fs::remove_all(dir_); }
 
@@ -41,25 +42,6 @@ class BenchCliTest : public ::testing::Test {
     return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, s.str()};
   }
 
-  /// A map_server map: a 6 x 4 m room split by a wall with a 1 m door (explored in ~10 s of
-  /// simulated time), as tiny/rooms.yaml.
-  void writeTwoRoomMap() {
-    const int w = 120, h = 80;
-    std::string pixels(static_cast<std::size_t>(w * h), static_cast<char>(254));
-    for (int y = 0; y < h; ++y) {
-      for (int x = 0; x < w; ++x) {
-        const bool wall = y < 2 || y >= h - 2 || x < 2 || x >= w - 2 ||
-                          (x >= 60 && x < 62 && !(y >= 30 && y < 50));
-        if (wall) pixels[static_cast<std::size_t>(y * w + x)] = 0;
-      }
-    }
-    std::ofstream(dir_ / "tiny" / "rooms.pgm", std::ios::binary) << "P5\n"
-                                                                 << w << " " << h << "\n255\n"
-                                                                 << pixels;
-    std::ofstream(dir_ / "tiny" / "rooms.yaml")
-        << "image: rooms.pgm\nresolution: 0.05\norigin: [0.0, 0.0, 0.0]\n"
-           "negate: 0\noccupied_thresh: 0.65\nfree_thresh: 0.196\n";
-  }
 
   std::string world() const { return (dir_ / "tiny" / "rooms.yaml").string(); }
 

@@ -22,6 +22,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "../plots/browser_support.hpp"
+#include "two_room_map.hpp"
 #include "roomscout/maps/semantic_map.hpp"
 
 namespace fs = std::filesystem;
@@ -84,7 +85,7 @@ class ReportBrowserTest : public ::testing::Test {
     dir_ = fs::temp_directory_path() / ("roomscout_report_browser_" + std::to_string(::getpid()) +
                                         "_" + std::to_string(std::random_device{}()));
     fs::create_directories(dir_ / "tiny");
-    writeTwoRoomMap();
+    roomscout::test::writeTwoRoomMap(dir_ / "tiny");
   }
   void TearDown() override {
     std::error_code ec;
@@ -99,24 +100,6 @@ class ReportBrowserTest : public ::testing::Test {
     return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, readFile(log)};
   }
 
-  /// A 6 x 4 m map_server map of two rooms joined by a 1 m door, as tiny/rooms.yaml.
-  void writeTwoRoomMap() {
-    const int w = 120, h = 80;
-    std::string pixels(static_cast<std::size_t>(w * h), static_cast<char>(254));
-    for (int y = 0; y < h; ++y) {
-      for (int x = 0; x < w; ++x) {
-        const bool wall = y < 2 || y >= h - 2 || x < 2 || x >= w - 2 ||
-                          (x >= 60 && x < 62 && !(y >= 30 && y < 50));
-        if (wall) pixels[static_cast<std::size_t>(y * w + x)] = 0;
-      }
-    }
-    std::ofstream(dir_ / "tiny" / "rooms.pgm", std::ios::binary) << "P5\n"
-                                                                 << w << " " << h << "\n255\n"
-                                                                 << pixels;
-    std::ofstream(dir_ / "tiny" / "rooms.yaml")
-        << "image: rooms.pgm\nresolution: 0.05\norigin: [0.0, 0.0, 0.0]\n"
-           "negate: 0\noccupied_thresh: 0.65\nfree_thresh: 0.196\n";
-  }
 
   /// Bench (2 methods x 2 seeds, at most 60 s simulated each) and report into dir_/report.
   void benchAndReport() {
