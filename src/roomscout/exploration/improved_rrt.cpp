@@ -67,13 +67,21 @@ class GainTable {
     const GridGeometry& g = grid.geometry();
     w_ = g.width();
     h_ = g.height();
-    sum_.assign(static_cast<std::size_t>(w_ + 1) * (h_ + 1), 0);
+    sum_.resize(static_cast<std::size_t>(w_ + 1) * (h_ + 1));
+    std::fill(sum_.begin(), sum_.begin() + w_ + 1, 0);
+    // Unknown +1, free 0, occupied -1, by table lookup: no data-dependent branch per cell.
+    constexpr int kValue[3] = {1, 0, -1};
+    static_assert(static_cast<int>(CellState::kUnknown) == 0 && static_cast<int>(CellState::kFree) == 1 &&
+                  static_cast<int>(CellState::kOccupied) == 2);
     for (int y = 0; y < h_; ++y) {
-      int row = 0;
+      const std::size_t row = static_cast<std::size_t>(y) * w_;
+      const int* above = &sum_[static_cast<std::size_t>(y) * (w_ + 1)];
+      int* out = &sum_[static_cast<std::size_t>(y + 1) * (w_ + 1)];
+      out[0] = 0;
+      int run = 0;
       for (int x = 0; x < w_; ++x) {
-        const CellState s = grid.state(static_cast<std::size_t>(y) * w_ + x);
-        row += s == CellState::kUnknown ? 1 : (s == CellState::kOccupied ? -1 : 0);
-        at(x + 1, y + 1) = at(x + 1, y) + row;
+        run += kValue[static_cast<int>(grid.state(row + x))];
+        out[x + 1] = above[x + 1] + run;
       }
     }
   }
@@ -88,7 +96,6 @@ class GainTable {
   }
 
  private:
-  int& at(int x, int y) { return sum_[static_cast<std::size_t>(y) * (w_ + 1) + x]; }
   int cat(int x, int y) const { return sum_[static_cast<std::size_t>(y) * (w_ + 1) + x]; }
   int w_ = 0, h_ = 0;
   std::vector<int> sum_;
@@ -99,8 +106,7 @@ class GainTable {
 /// truncated), as the original's loops; cells outside the grid count as nothing.
 namespace {
 
-double rectangleGain(const GainTable& table, const GridGeometry& g, const Vec2& p, double half_m) {
-  const Cell c = g.cellOf(p);
+double rectangleGain(const GainTable& table, const GridGeometry& g, const Cell& c, double half_m) {
   const int r = static_cast<int>(half_m / g.resolution_m());
   return table.sum(c.x - r, c.y - r, c.x + r, c.y + r + 1) * g.resolution_m() * g.resolution_m();
 }
@@ -142,11 +148,22 @@ void ImprovedRrt::onGoalFailed(const Vec2& goal_m) {
   goal_active_ = false;
 }
 
-bool ImprovedRrt::stale(const ExplorationInput& input, const Vec2& p) const {
-  const GridGeometry& g = input.grid.geometry();
-  const Cell c = g.cellOf(p);
-  if (!g.contains(c)) return true;
-  const std::size_t i = g.index(c);
+ImprovedRrt::Point ImprovedRrt::makePoint(const GridGeometry& g, const Vec2& p, long copies) {
+  Point f{p, copies};
+  f.cell = g.cellOf(p);
+  f.index = g.contains(f.cell) ? static_cast<long>(g.index(f.cell)) : -1;
+  const double res = g.resolution_m();
+  const Vec2 offsets[4] = {{res, 0}, {0, res}, {-res, 0}, {0, -res}};
+  for (int k = 0; k < 4; ++k) {
+    const Cell c = g.cellOf(p + offsets[k]);
+    f.neighbours[k] = g.contains(c) ? static_cast<long>(g.index(c)) : -1;
+  }
+  return f;
+}
+
+bool ImprovedRrt::stale(const ExplorationInput& input, const Point& f) {
+  if (f.index < 0) return true;
+  const auto i = static_cast<std::size_t>(f.index);
   return !input.grid.isUnknown(i) || input.costmap.isLethal(i);
 }
 
@@ -181,15 +198,19 @@ ImprovedRrt::Step ImprovedRrt::iterate(const ExplorationInput& input, const RrtT
   // first iteration, so only the appended ones need the test; the previous goal's copies are
   // counted on its entry instead of stored (see Point::copies).
   const RrtExtension e = tree_->grow(input.grid, sampler, rng_);
-  if (e.status == EdgeStatus::kFrontier && !blacklisted(e.new_m) && !stale(input, e.new_m)) {
-    frontiers_.push_back({e.new_m});
-    ++held_;
+  if (e.status == EdgeStatus::kFrontier && !blacklisted(e.new_m)) {
+    Point f = makePoint(input.grid.geometry(), e.new_m, 1);
+    if (!stale(input, f)) {
+      frontiers_.push_back(f);
+      ++held_;
+    }
   }
   ++iterations_since_selection_;
-  if (has_previous_ && !stale(input, previous_goal_m_) && !blacklisted(previous_goal_m_)) {
+  if (has_previous_ && !stale(input, previous_goal_) && !blacklisted(previous_goal_m_)) {
     if (previous_index_ < 0) {
       previous_index_ = static_cast<long>(frontiers_.size());
-      frontiers_.push_back({previous_goal_m_, 0});
+      frontiers_.push_back(previous_goal_);
+      frontiers_.back().copies = 0;
     }
     ++frontiers_[static_cast<std::size_t>(previous_index_)].copies;
     ++held_;
@@ -209,10 +230,8 @@ void ImprovedRrt::select(const ExplorationInput& input) {
   const double res = g.resolution_m();
   // Points whose four neighbours are all unknown lie outside the valid map.
   eraseFrontiers([&](const Point& f) {
-    const Vec2 offsets[4] = {{res, 0}, {0, res}, {-res, 0}, {0, -res}};
-    for (const Vec2& o : offsets) {
-      const Cell c = g.cellOf(f.p + o);
-      if (!g.contains(c) || !input.grid.isUnknown(g.index(c))) return false;
+    for (const long n : f.neighbours) {
+      if (n < 0 || !input.grid.isUnknown(static_cast<std::size_t>(n))) return false;
     }
     return true;
   });
@@ -228,7 +247,7 @@ void ImprovedRrt::select(const ExplorationInput& input) {
         gain_table_->build(input.grid);
         table_call_ = call_;
       }
-      f.gain_m2 = rectangleGain(*gain_table_, g, f.p, options_.info_radius_m);
+      f.gain_m2 = rectangleGain(*gain_table_, g, f.cell, options_.info_radius_m);
       f.gain_call = call_;
     }
     double gain = f.gain_m2;
@@ -244,6 +263,7 @@ void ImprovedRrt::select(const ExplorationInput& input) {
   const double l1 = std::abs(best->p.x() - previous_goal_m_.x()) + std::abs(best->p.y() - previous_goal_m_.y());
   if (has_previous_ && l1 < options_.min_goal_change_cells * res) return;
   previous_goal_m_ = best->p;
+  previous_goal_ = *best;
   previous_index_ = best - frontiers_.data();
   has_previous_ = true;
   goal_active_ = true;
@@ -272,7 +292,7 @@ Decision ImprovedRrt::decide(const ExplorationInput& input) {
     Vec2 box_min, box_max;
     knownCellsBox(input.grid, robot, box_min, box_max);
     const RrtTree::Sampler sampler = uniformBoxSampler(box_min, box_max);
-    eraseFrontiers([&](const Point& f) { return stale(input, f.p); });
+    eraseFrontiers([&](const Point& f) { return stale(input, f); });
     for (long k = 0; k < n; ++k) {
       if (iterate(input, sampler) == Step::kDone) return Decision::done();
     }

@@ -114,12 +114,17 @@ class ImprovedRrt final : public ExplorationStrategy {
                             ///< is appended again every iteration while it stays unknown
     double gain_m2 = 0.0;   ///< G cached for the call `gain_call`
     std::uint64_t gain_call = 0;
+    Cell cell{};            ///< cell of p; index: its row-major index, -1 outside the grid
+    long index = -1;
+    long neighbours[4] = {-1, -1, -1, -1};  ///< cells of p + (res,0), (0,res), (-res,0), (0,-res)
   };
+  /// A point with its cells computed once (from p, as the original computes them each time).
+  static Point makePoint(const GridGeometry& g, const Vec2& p, long copies);
   enum class Step { kContinue, kDone };
   Step iterate(const ExplorationInput& input, const RrtTree::Sampler& sampler);
   void select(const ExplorationInput& input);
   bool blacklisted(const Vec2& p) const;
-  bool stale(const ExplorationInput& input, const Vec2& p) const;
+  static bool stale(const ExplorationInput& input, const Point& f);
   /// erase_if over frontiers_ that keeps held_ and previous_index_ up to date.
   template <typename Pred>
   void eraseFrontiers(Pred&& pred);
@@ -143,6 +148,7 @@ class ImprovedRrt final : public ExplorationStrategy {
   std::uint64_t table_call_ = 0;
   bool has_previous_ = false;
   Vec2 previous_goal_m_ = Vec2::Zero();
+  Point previous_goal_;                ///< previous_goal_m_ with its cells
   bool goal_active_ = false;           ///< previous_goal_m_ is being driven to
 };
 
