@@ -120,16 +120,16 @@ Decision Mmpf::decide(const ExplorationInput& input) {
   const int cw = (g.width() + f - 1) / f, ch = (g.height() + f - 1) / f;
   const int pw = cw + 2;  // padded row length
   const std::size_t pn = static_cast<std::size_t>(pw) * (ch + 2);
-  // 0: nothing known yet, 1: some free and no occupied map cell, 2: an occupied map cell.
   free_.assign(pn, 0);
+  // The states are bits (free 1, occupied 2), so OR-ing them gives 1 exactly for the cells
+  // with some free and no occupied map cell.
+  static_assert(static_cast<int>(CellState::kUnknown) == 0 && static_cast<int>(CellState::kFree) == 1 &&
+                static_cast<int>(CellState::kOccupied) == 2);
   for (int y = 0; y < g.height(); ++y) {
     const std::size_t row = static_cast<std::size_t>(y) * g.width();
     const std::size_t crow = static_cast<std::size_t>(y / f + 1) * pw + 1;
     for (int x = 0; x < g.width(); ++x) {
-      const CellState st = input.grid.state(row + x);
-      std::uint8_t& c = free_[crow + x / f];
-      if (st == CellState::kOccupied) c = 2;
-      else if (st == CellState::kFree && c == 0) c = 1;
+      free_[crow + x / f] |= static_cast<std::uint8_t>(input.grid.state(row + x));
     }
   }
   for (std::uint8_t& c : free_) c = c == 1 ? 1 : 0;
