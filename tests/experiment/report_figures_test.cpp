@@ -74,24 +74,27 @@ std::string format(const char* spec, double v) {
   return buf;
 }
 
-/// A map_server map: a 6 x 4 m room split by a wall with a 1 m door, as `dir`/rooms.yaml.
-fs::path writeTwoRoomMap(const fs::path& dir) {
+/// A world file: a 6 x 4 m house split by a wall with a 1 m door into two labelled rooms (so
+/// the bench counts revisits), as `dir`/rooms.yaml.
+fs::path writeTwoRoomWorld(const fs::path& dir) {
   fs::create_directories(dir);
-  const int w = 120, h = 80;
-  std::string pixels(static_cast<std::size_t>(w * h), static_cast<char>(254));
-  for (int y = 0; y < h; ++y) {
-    for (int x = 0; x < w; ++x) {
-      const bool wall =
-          y < 2 || y >= h - 2 || x < 2 || x >= w - 2 || (x >= 60 && x < 62 && !(y >= 30 && y < 50));
-      if (wall) pixels[static_cast<std::size_t>(y * w + x)] = 0;
-    }
-  }
-  std::ofstream(dir / "rooms.pgm", std::ios::binary) << "P5\n"
-                                                     << w << " " << h << "\n255\n"
-                                                     << pixels;
-  std::ofstream(dir / "rooms.yaml")
-      << "image: rooms.pgm\nresolution: 0.05\norigin: [0.0, 0.0, 0.0]\n"
-         "negate: 0\noccupied_thresh: 0.65\nfree_thresh: 0.196\n";
+  std::ofstream(dir / "rooms.yaml") << R"(name: rooms
+wall_thickness_m: 0.1
+wall_height_m: 2.5
+start: [1.5, 2.0, 0]
+walls:
+  - [[-0.05, 0], [6.05, 0]]
+  - [[6, 0], [6, 4]]
+  - [[6.05, 4], [-0.05, 4]]
+  - [[0, 4], [0, 0]]
+  - [[3, 0], [3, 1.5]]
+  - [[3, 2.5], [3, 4]]
+rooms:
+  - name: west
+    polygon: [[0, 0], [3, 0], [3, 4], [0, 4]]
+  - name: east
+    polygon: [[3, 0], [6, 0], [6, 4], [3, 4]]
+)";
   return dir / "rooms.yaml";
 }
 
@@ -194,7 +197,7 @@ TEST(ReportOracle, AWorldThatDoesNotLoadIsANoteNotAnError) {
 
 TEST(ReportWriter, WritesTablesFiguresAndPageFromABench) {
   TempDir dir;
-  const fs::path world = writeTwoRoomMap(dir / "tiny");
+  const fs::path world = writeTwoRoomWorld(dir / "tiny");
   BenchOptions bench;
   bench.worlds = {world.string()};
   bench.methods = {"nearest_frontier", "mmpf"};

@@ -6,6 +6,7 @@
 
 #include "roomscout/exploration/strategy_registry.hpp"
 #include "roomscout/io/builtin_worlds.hpp"
+#include "roomscout/io/run_outputs.hpp"
 #include "roomscout/sim/analysis_maps_observer.hpp"
 #include "test_worlds.hpp"
 
@@ -109,6 +110,21 @@ TEST(Episode, TwoRoomsAreBothExploredAndCounted) {
   const EpisodeResult r = explore(testing::twoRooms(), "nearest_frontier", 1);
   EXPECT_GE(r.exploration_rate, 0.98);
   EXPECT_EQ(r.rooms_entered, 2);
+}
+
+TEST(Episode, RoomCountsAreNullWithoutGroundTruthRooms) {
+  World unlabelled = testing::squareRoom(4.0, 0.2);
+  unlabelled.rooms.clear();
+  const EpisodeResult without = explore(unlabelled, "nearest_frontier", 1);
+  EXPECT_FALSE(without.room_truth);
+  const nlohmann::json metrics = io::metricsJson({}, without);
+  EXPECT_TRUE(metrics.at("revisits").is_null());
+  EXPECT_TRUE(metrics.at("rooms_entered").is_null());
+
+  const EpisodeResult with = explore(testing::squareRoom(4.0, 0.2), "nearest_frontier", 1);
+  EXPECT_TRUE(with.room_truth);
+  EXPECT_EQ(with.rooms_entered, 1);
+  EXPECT_EQ(io::metricsJson({}, with).at("revisits"), 0);
 }
 
 TEST(Episode, BumpingIntoAnObstacleTheLaserCannotSeeRecoversAndEnds) {

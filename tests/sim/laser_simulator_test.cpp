@@ -27,7 +27,7 @@ TEST(LaserSimulator, RayDistancesMatchAnalyticWalls) {
   options.range_max_m = 20.0;
   LaserSimulator laser(model, options, 1);
   const double tolerance = 1.5 * model.geometry().resolution_m();
-  for (const Vec2 origin : {Vec2(5.0, 5.0), Vec2(2.3, 7.71), Vec2(8.9, 1.05)}) {
+  for (const Vec2& origin : {Vec2(5.0, 5.0), Vec2(2.3, 7.71), Vec2(8.9, 1.05)}) {
     for (int k = 0; k < 720; ++k) {
       const double angle = k * M_PI / 360.0 + 0.0013;
       const double expected = analyticSquare(origin, angle, 0.1, 9.9);

@@ -55,8 +55,9 @@ nlohmann::json metricsJson(const RunInfo& info, const sim::EpisodeResult& r) {
       {"length_m", r.length_m},
       {"max_time_s", r.max_time_s},
       {"reachable_area_m2", r.reachable_area_m2},
-      {"revisits", r.revisits},
-      {"rooms_entered", r.rooms_entered},
+      // null without ground-truth rooms, so that reports show no count instead of a zero.
+      {"revisits", r.room_truth ? nlohmann::json(r.revisits) : nlohmann::json(nullptr)},
+      {"rooms_entered", r.room_truth ? nlohmann::json(r.rooms_entered) : nlohmann::json(nullptr)},
       {"goals", r.goals},
       {"goal_failures", r.goal_failures},
       {"recoveries", r.recoveries},

@@ -384,6 +384,7 @@ EpisodeResult runEpisode(const WorldModel& world, EpisodeConfig config, Explorat
   result.sim_time_s = t;
   result.length_m = robot.odometer_m();
   result.rooms_entered = static_cast<int>(visited_rooms.size());
+  result.room_truth = world.hasRooms();
   result.occupancy_update = TimingStats::of(std::move(occupancy_ms));
   result.costmap_update = TimingStats::of(std::move(costmap_ms));
   result.decision = TimingStats::of(std::move(decision_ms));

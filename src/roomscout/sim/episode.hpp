@@ -90,6 +90,8 @@ struct EpisodeResult {
   double length_m = 0.0;
   double max_time_s = 0.0;
   double reachable_area_m2 = 0.0;
+  bool room_truth = false;         ///< the world has ground-truth rooms: without, the two
+                                   ///< counts below are 0 and mean nothing
   int revisits = 0;                ///< entries into a ground-truth room entered before
   int rooms_entered = 0;
   int goals = 0;

@@ -49,6 +49,7 @@ WorldModel::WorldModel(const World& world, const WorldModelOptions& options)
   } else {
     rasterizeGeometry();
   }
+  has_rooms_ = std::any_of(room_labels_.begin(), room_labels_.end(), [](std::int32_t id) { return id != 0; });
   computeClearance();
   chooseStart();
 }

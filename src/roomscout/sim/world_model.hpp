@@ -44,6 +44,8 @@ class WorldModel {
 
   /// Ground-truth room id at a point (0 = none).
   int roomAt(const Vec2& p_m) const;
+  /// True when the world labels at least one room (HouseExpo plans, say, label none).
+  bool hasRooms() const { return has_rooms_; }
 
   /// The start pose: the world's own, or for worlds without one, the free cell of largest
   /// clearance in the largest free region (deterministic).
@@ -65,6 +67,7 @@ class WorldModel {
   std::vector<std::uint8_t> robot_solid_;
   std::vector<float> clearance_m_;
   std::vector<std::int32_t> room_labels_;
+  bool has_rooms_ = false;
   Pose2 start_;
   double free_area_m2_ = 0.0;
 };
