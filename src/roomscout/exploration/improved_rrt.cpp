@@ -125,7 +125,7 @@ void ImprovedRrt::eraseFrontiers(Pred&& pred) {
   previous_index_ = -1;
   for (std::size_t i = 0; i < frontiers_.size(); ++i) {
     held_ += frontiers_[i].copies;
-    if (has_previous_ && previous_index_ < 0 && frontiers_[i].p == previous_goal_m_) {
+    if (has_previous_ && previous_index_ < 0 && frontiers_[i].p == previous_goal_.p) {
       previous_index_ = static_cast<long>(i);
     }
   }
@@ -141,7 +141,7 @@ void ImprovedRrt::onGoalReached(const Vec2& goal_m) { onGoalFailed(goal_m); }
 void ImprovedRrt::onGoalFailed(const Vec2& goal_m) {
   // Reached or failed, the goal is not sent again: what is still unknown around a reached goal
   // cannot be seen from it (behind a wall), and a failed one cannot be reached.
-  if (goal_active_ && (goal_m - previous_goal_m_).norm() < 1e-9) {
+  if (goal_active_ && (goal_m - previous_goal_.p).norm() < 1e-9) {
     blacklist_.push_back(goal_m);
     eraseFrontiers([&](const Point& f) { return blacklisted(f.p); });
   }
@@ -206,7 +206,7 @@ ImprovedRrt::Step ImprovedRrt::iterate(const ExplorationInput& input, const RrtT
     }
   }
   ++iterations_since_selection_;
-  if (has_previous_ && !stale(input, previous_goal_) && !blacklisted(previous_goal_m_)) {
+  if (has_previous_ && !stale(input, previous_goal_) && !blacklisted(previous_goal_.p)) {
     if (previous_index_ < 0) {
       previous_index_ = static_cast<long>(frontiers_.size());
       frontiers_.push_back(previous_goal_);
@@ -260,9 +260,8 @@ void ImprovedRrt::select(const ExplorationInput& input) {
     }
   }
   if (best == nullptr) return;
-  const double l1 = std::abs(best->p.x() - previous_goal_m_.x()) + std::abs(best->p.y() - previous_goal_m_.y());
+  const double l1 = std::abs(best->p.x() - previous_goal_.p.x()) + std::abs(best->p.y() - previous_goal_.p.y());
   if (has_previous_ && l1 < options_.min_goal_change_cells * res) return;
-  previous_goal_m_ = best->p;
   previous_goal_ = *best;
   previous_index_ = best - frontiers_.data();
   has_previous_ = true;
@@ -299,9 +298,9 @@ Decision ImprovedRrt::decide(const ExplorationInput& input) {
   }
 
   const GridGeometry& g = input.grid.geometry();
-  if (goal_active_ && !input.costmap.isLethal(g.cellOf(previous_goal_m_))) return Decision::goal(previous_goal_m_);
+  if (goal_active_ && !input.costmap.isLethal(g.cellOf(previous_goal_.p))) return Decision::goal(previous_goal_.p);
   // A goal that became lethal is given up like a failed one.
-  if (goal_active_) onGoalFailed(previous_goal_m_);
+  if (goal_active_) onGoalFailed(previous_goal_.p);
   // No goal to drive to: wait where we are until the next selection.
   if (const auto wait = nearestGoalCell(input.grid, input.costmap, robot, 3.0)) return Decision::goal(*wait);
   return Decision::done();

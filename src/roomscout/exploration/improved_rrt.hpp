@@ -109,7 +109,7 @@ class ImprovedRrt final : public ExplorationStrategy {
 
  private:
   struct Point {
-    Vec2 p;
+    Vec2 p = Vec2::Zero();
     long copies = 1;        ///< times the original's list holds this point: the previous goal
                             ///< is appended again every iteration while it stays unknown
     double gain_m2 = 0.0;   ///< G cached for the call `gain_call`
@@ -141,15 +141,14 @@ class ImprovedRrt final : public ExplorationStrategy {
   long selected_count_ = 0;            ///< points held right after the last selection
   std::vector<Point> frontiers_;
   long held_ = 0;                      ///< sum of frontiers_[i].copies
-  long previous_index_ = -1;           ///< entry of previous_goal_m_ in frontiers_, if any
+  long previous_index_ = -1;           ///< entry of previous_goal_.p in frontiers_, if any
   std::vector<std::uint8_t> visited_;  ///< cells the robot came within observed_radius_m of
   std::vector<Vec2> blacklist_;
   std::unique_ptr<GainTable> gain_table_;  ///< built at most once per call, when needed
   std::uint64_t table_call_ = 0;
   bool has_previous_ = false;
-  Vec2 previous_goal_m_ = Vec2::Zero();
-  Point previous_goal_;                ///< previous_goal_m_ with its cells
-  bool goal_active_ = false;           ///< previous_goal_m_ is being driven to
+  Point previous_goal_;                ///< the goal last selected, with its cells
+  bool goal_active_ = false;           ///< previous_goal_.p is being driven to
 };
 
 }  // namespace roomscout
