@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "two_room_map.hpp"
+#include "two_room_world.hpp"
 #include "roomscout/experiment/result_record.hpp"
 
 namespace fs = std::filesystem;
@@ -28,7 +28,7 @@ class BenchCliTest : public ::testing::Test {
     dir_ = fs::temp_directory_path() /
            ("roomscout_bench_cli_" + std::to_string(std::random_device{}()));
     fs::create_directories(dir_ / "tiny");
-    roomscout::test::writeTwoRoomMap(dir_ / "tiny");
+    roomscout::test::writeTwoRoomWorld(dir_ / "tiny");
   }
   void TearDown() override { fs::remove_all(dir_); }
 

@@ -22,7 +22,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "../plots/browser_support.hpp"
-#include "two_room_map.hpp"
+#include "two_room_world.hpp"
 #include "roomscout/maps/semantic_map.hpp"
 
 namespace fs = std::filesystem;
@@ -85,7 +85,7 @@ class ReportBrowserTest : public ::testing::Test {
     dir_ = fs::temp_directory_path() / ("roomscout_report_browser_" + std::to_string(::getpid()) +
                                         "_" + std::to_string(std::random_device{}()));
     fs::create_directories(dir_ / "tiny");
-    roomscout::test::writeTwoRoomMap(dir_ / "tiny");
+    roomscout::test::writeTwoRoomWorld(dir_ / "tiny");
   }
   void TearDown() override {
     std::error_code ec;

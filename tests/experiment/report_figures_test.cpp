@@ -22,6 +22,7 @@
 #include "roomscout/experiment/report.hpp"
 #include "roomscout/experiment/report_writer.hpp"
 #include "roomscout/io/atomic_file.hpp"
+#include "../cli/two_room_world.hpp"
 
 namespace roomscout::experiment {
 namespace {
@@ -72,30 +73,6 @@ std::string format(const char* spec, double v) {
   char buf[64];
   std::snprintf(buf, sizeof buf, spec, v);
   return buf;
-}
-
-/// A world file: a 6 x 4 m house split by a wall with a 1 m door into two labelled rooms (so
-/// the bench counts revisits), as `dir`/rooms.yaml.
-fs::path writeTwoRoomWorld(const fs::path& dir) {
-  fs::create_directories(dir);
-  std::ofstream(dir / "rooms.yaml") << R"(name: rooms
-wall_thickness_m: 0.1
-wall_height_m: 2.5
-start: [1.5, 2.0, 0]
-walls:
-  - [[-0.05, 0], [6.05, 0]]
-  - [[6, 0], [6, 4]]
-  - [[6.05, 4], [-0.05, 4]]
-  - [[0, 4], [0, 0]]
-  - [[3, 0], [3, 1.5]]
-  - [[3, 2.5], [3, 4]]
-rooms:
-  - name: west
-    polygon: [[0, 0], [3, 0], [3, 4], [0, 4]]
-  - name: east
-    polygon: [[3, 0], [6, 0], [6, 4], [3, 4]]
-)";
-  return dir / "rooms.yaml";
 }
 
 TEST(ReportFigures, RateCurvesShowTheMedianSeedAndGroupMeans) {
@@ -197,7 +174,8 @@ TEST(ReportOracle, AWorldThatDoesNotLoadIsANoteNotAnError) {
 
 TEST(ReportWriter, WritesTablesFiguresAndPageFromABench) {
   TempDir dir;
-  const fs::path world = writeTwoRoomWorld(dir / "tiny");
+  fs::create_directories(dir / "tiny");
+  const fs::path world = roomscout::test::writeTwoRoomWorld(dir / "tiny");
   BenchOptions bench;
   bench.worlds = {world.string()};
   bench.methods = {"nearest_frontier", "mmpf"};

@@ -107,8 +107,9 @@ int runExplore(const ExploreArgs& args) {
     std::snprintf(buf, sizeof buf, "%.1f %s", *v, unit);
     return std::string(buf);
   };
-  const std::string revisits = result.room_truth ? std::to_string(result.revisits) : std::string("no room truth, no");
-  std::printf("%s %s seed %llu: explored %.1f %%, T98 %s, L98 %s, done %s, %s revisits, %.2f s wall -> %s\n",
+  const std::string revisits =
+      result.room_truth ? std::to_string(result.revisits) + " revisits" : std::string("no ground-truth rooms");
+  std::printf("%s %s seed %llu: explored %.1f %%, T98 %s, L98 %s, done %s, %s, %.2f s wall -> %s\n",
               world.name.c_str(), args.method.c_str(), static_cast<unsigned long long>(args.seed),
               result.exploration_rate * 100.0, fmt(result.t98_s, "s").c_str(), fmt(result.l98_m, "m").c_str(),
               result.timed_out ? "timed out" : fmt(result.t_done_s, "s").c_str(), revisits.c_str(),
