@@ -71,8 +71,6 @@ class GainTable {
     std::fill(sum_.begin(), sum_.begin() + w_ + 1, 0);
     // Unknown +1, free 0, occupied -1, by table lookup: no data-dependent branch per cell.
     constexpr int kValue[3] = {1, 0, -1};
-    static_assert(static_cast<int>(CellState::kUnknown) == 0 && static_cast<int>(CellState::kFree) == 1 &&
-                  static_cast<int>(CellState::kOccupied) == 2);
     for (int y = 0; y < h_; ++y) {
       const std::size_t row = static_cast<std::size_t>(y) * w_;
       const int* above = &sum_[static_cast<std::size_t>(y) * (w_ + 1)];

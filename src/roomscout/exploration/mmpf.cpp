@@ -123,8 +123,6 @@ Decision Mmpf::decide(const ExplorationInput& input) {
   free_.assign(pn, 0);
   // The states are bits (free 1, occupied 2), so OR-ing them gives 1 exactly for the cells
   // with some free and no occupied map cell.
-  static_assert(static_cast<int>(CellState::kUnknown) == 0 && static_cast<int>(CellState::kFree) == 1 &&
-                static_cast<int>(CellState::kOccupied) == 2);
   for (int y = 0; y < g.height(); ++y) {
     const std::size_t row = static_cast<std::size_t>(y) * g.width();
     const std::size_t crow = static_cast<std::size_t>(y / f + 1) * pw + 1;
