@@ -32,7 +32,8 @@ std::vector<ParameterRef> OccupancyGridOptions::parameters() {
 }
 
 OccupancyGrid::OccupancyGrid(const GridGeometry& geometry, const OccupancyGridOptions& options)
-    : geometry_(geometry), options_(options), log_odds_(geometry.cellCount(), 0.0f) {
+    : geometry_(geometry), options_(options), log_odds_(geometry.cellCount(), 0.0f),
+      states_(geometry.cellCount(), CellState::kUnknown) {
   options_.validate();
   hit_ = static_cast<float>(options_.log_odds_hit);
   miss_ = static_cast<float>(options_.log_odds_miss);
@@ -48,12 +49,7 @@ void OccupancyGrid::setState(std::size_t index, CellState state) {
     case CellState::kFree: log_odds_[index] = min_; break;
     case CellState::kOccupied: log_odds_[index] = max_; break;
   }
-}
-
-std::vector<CellState> OccupancyGrid::states() const {
-  std::vector<CellState> out(log_odds_.size());
-  for (std::size_t i = 0; i < out.size(); ++i) out[i] = state(i);
-  return out;
+  states_[index] = classify(log_odds_[index]);
 }
 
 }  // namespace roomscout

@@ -32,7 +32,9 @@ struct OccupancyGridOptions {
   std::vector<ParameterRef> parameters();
 };
 
-/// A grid of log-odds occupancy values. Unknown cells hold exactly 0.
+/// A grid of log-odds occupancy values. Unknown cells hold exactly 0. Each cell's state (its
+/// log-odds classified by the thresholds) is kept beside it, one byte per cell, updated on
+/// every write: readers that ask for states (strategies, costmap, analysis) read bytes.
 /// Not thread-safe for concurrent writes; concurrent reads are fine.
 class OccupancyGrid {
  public:
@@ -42,12 +44,7 @@ class OccupancyGrid {
   const GridGeometry& geometry() const { return geometry_; }
   const OccupancyGridOptions& options() const { return options_; }
 
-  CellState state(std::size_t index) const {
-    const float l = log_odds_[index];
-    if (l > occupied_threshold_) return CellState::kOccupied;
-    if (l < free_threshold_) return CellState::kFree;
-    return CellState::kUnknown;
-  }
+  CellState state(std::size_t index) const { return states_[index]; }
   CellState state(Cell c) const { return state(geometry_.index(c)); }
   bool isFree(std::size_t index) const { return state(index) == CellState::kFree; }
   bool isUnknown(std::size_t index) const { return state(index) == CellState::kUnknown; }
@@ -63,17 +60,23 @@ class OccupancyGrid {
   void setState(std::size_t index, CellState state);
 
   /// Cell states as one byte per cell, row-major (for bulk analysis).
-  std::vector<CellState> states() const;
+  const std::vector<CellState>& states() const { return states_; }
 
  private:
   void add(std::size_t index, float delta) {
     float& l = log_odds_[index];
     l = std::min(max_, std::max(min_, l + delta));
+    states_[index] = classify(l);
+  }
+  CellState classify(float l) const {
+    // free_threshold < 0 < occupied_threshold (validated), so at most one term is 1.
+    return static_cast<CellState>((l > occupied_threshold_) * 2 + (l < free_threshold_));
   }
 
   GridGeometry geometry_;
   OccupancyGridOptions options_;
   std::vector<float> log_odds_;
+  std::vector<CellState> states_;  ///< classify(log_odds_[i]), kept in step with it
   float hit_ = 0, miss_ = 0, min_ = 0, max_ = 0, occupied_threshold_ = 0, free_threshold_ = 0;
 };
 

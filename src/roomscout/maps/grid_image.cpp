@@ -1,6 +1,7 @@
 #include "roomscout/maps/grid_image.hpp"
 
 #include <algorithm>
+#include <cstring>
 
 #include <opencv2/imgproc.hpp>
 
@@ -8,26 +9,6 @@
 #include "roomscout/maps/run_components.hpp"
 
 namespace roomscout::maps {
-
-namespace {
-
-/// OccupancyGrid::state() as branch-free arithmetic that the compiler vectorises: the grid
-/// compares each log-odds value with its thresholds cast to float, and so does this.
-struct StateRule {
-  float occupied, free;
-  explicit StateRule(const OccupancyGrid& grid)
-      : occupied(static_cast<float>(grid.options().occupied_threshold)),
-        free(static_cast<float>(grid.options().free_threshold)) {}
-  bool known(float l) const { return (l > occupied) | (l < free); }
-  std::uint8_t operator()(float l) const {
-    static_assert(static_cast<int>(CellState::kUnknown) == 0 && static_cast<int>(CellState::kFree) == 1 &&
-                  static_cast<int>(CellState::kOccupied) == 2);
-    // free_threshold < 0 < occupied_threshold (validated), so at most one term is 1.
-    return static_cast<std::uint8_t>((l > occupied) * 2 + (l < free));
-  }
-};
-
-}  // namespace
 
 cv::Mat stateImage(const OccupancyGrid& grid) {
   cv::Mat image;
@@ -38,23 +19,22 @@ cv::Mat stateImage(const OccupancyGrid& grid) {
 void stateImage(const OccupancyGrid& grid, cv::Mat& image) {
   const GridGeometry& g = grid.geometry();
   image.create(g.height(), g.width(), CV_8U);
-  const StateRule rule(grid);
+  // The image's pixel values are the CellState values.
+  const CellState* states = grid.states().data();
   for (int y = 0; y < g.height(); ++y) {
-    auto* row = image.ptr<std::uint8_t>(y);
-    const std::size_t first = g.index(Cell{0, y});
-    for (int x = 0; x < g.width(); ++x) row[x] = rule(grid.logOdds(first + static_cast<std::size_t>(x)));
+    std::memcpy(image.ptr<std::uint8_t>(y), states + g.index(Cell{0, y}), static_cast<std::size_t>(g.width()));
   }
 }
 
 std::size_t knownCellCount(const OccupancyGrid& grid) {
-  const StateRule rule(grid);
+  const auto* states = reinterpret_cast<const std::uint8_t*>(grid.states().data());
   const std::size_t n = grid.geometry().cellCount();
   std::size_t known = 0;
   constexpr std::size_t kBlock = 4096;  // 32-bit partial sums vectorise better
   for (std::size_t start = 0; start < n; start += kBlock) {
     const std::size_t end = std::min(n, start + kBlock);
     std::int32_t block = 0;
-    for (std::size_t i = start; i < end; ++i) block += rule.known(grid.logOdds(i));
+    for (std::size_t i = start; i < end; ++i) block += states[i] != 0;
     known += block;
   }
   return known;
