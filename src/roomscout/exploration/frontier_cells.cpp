@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include <opencv2/imgproc.hpp>
+
 namespace roomscout {
 
 namespace {
@@ -75,6 +77,25 @@ std::optional<Cell> regionStart(const OccupancyGrid& grid, const Costmap& costma
   return start;
 }
 
+/// The grid's cell states as an image (a view, no copy).
+cv::Mat stateView(const OccupancyGrid& grid) {
+  const GridGeometry& g = grid.geometry();
+  static_assert(sizeof(CellState) == 1);
+  return cv::Mat(g.height(), g.width(), CV_8U, const_cast<CellState*>(grid.states().data()));
+}
+
+/// The known-free, non-lethal cells 4-connected to `start` (which must be one), as 1 in an
+/// image of the grid's size (OpenCV's scanline flood fill on the image of such cells).
+cv::Mat freeRegionMask(const OccupancyGrid& grid, const Costmap& costmap, Cell start) {
+  const GridGeometry& g = grid.geometry();
+  const cv::Mat lethal(g.height(), g.width(), CV_8U, const_cast<std::uint8_t*>(costmap.lethalMask().data()));
+  const cv::Mat open = (stateView(grid) == static_cast<std::uint8_t>(CellState::kFree)) & (lethal == 0);
+  cv::Mat mask = cv::Mat::zeros(g.height() + 2, g.width() + 2, CV_8U);
+  cv::floodFill(open, mask, cv::Point(start.x, start.y), cv::Scalar(), nullptr, cv::Scalar(), cv::Scalar(),
+                4 | cv::FLOODFILL_MASK_ONLY | (1 << 8));
+  return mask(cv::Rect(1, 1, g.width(), g.height()));
+}
+
 /// Scanline flood fill of the open cells 4-connected to `start`: each seed is widened to the
 /// whole open run of its row, and the rows above and below are seeded once per open run along
 /// it. Calls `visit(index)` for each cell as it is reached and stops early when it returns
@@ -122,13 +143,24 @@ std::vector<Cell> reachableFrontierCells(const OccupancyGrid& grid, const Costma
   std::vector<Cell> out;
   if (w < 5 || h < 5) return out;
   const FrontierCellTest isFrontier(grid, costmap, obstacle_l1_cells, exhausted);
-  std::vector<std::uint8_t> region;
-  if (robot_m != nullptr) region = robotFreeRegion(grid, costmap, *robot_m);
+  // Candidates: unknown cells (with the robot: only those with a 4-neighbour in its region),
+  // found by whole-image operations; the full test runs on these only, in row-major order.
+  const cv::Mat unknown = stateView(grid) == static_cast<std::uint8_t>(CellState::kUnknown);
+  cv::Mat candidates;
+  if (robot_m != nullptr) {
+    const std::optional<Cell> start = regionStart(grid, costmap, *robot_m);
+    if (!start) return out;
+    cv::dilate(freeRegionMask(grid, costmap, *start), candidates,
+               cv::getStructuringElement(cv::MORPH_CROSS, cv::Size(3, 3)), cv::Point(-1, -1), 1,
+               cv::BORDER_CONSTANT, cv::Scalar(0));
+    candidates &= unknown;
+  } else {
+    candidates = unknown;
+  }
   for (int y = 2; y < h - 2; ++y) {
+    const std::uint8_t* row = candidates.ptr<std::uint8_t>(y);
     for (int x = 2; x < w - 2; ++x) {
-      const std::size_t i = static_cast<std::size_t>(y) * w + x;
-      if (robot_m != nullptr && !region[i - 1] && !region[i + 1] && !region[i - w] && !region[i + w]) continue;
-      if (isFrontier(x, y)) out.push_back({x, y});
+      if (row[x] && isFrontier(x, y)) out.push_back({x, y});
     }
   }
   return out;
@@ -162,7 +194,10 @@ std::size_t countReachableFrontierCells(const OccupancyGrid& grid, const Costmap
 std::vector<std::uint8_t> robotFreeRegion(const OccupancyGrid& grid, const Costmap& costmap, const Vec2& from_m) {
   std::vector<std::uint8_t> region(grid.geometry().cellCount(), 0);
   if (const std::optional<Cell> start = regionStart(grid, costmap, from_m)) {
-    floodOpenRegion(grid, costmap, *start, region, [](std::size_t) { return true; });
+    const cv::Mat mask = freeRegionMask(grid, costmap, *start);
+    for (int y = 0; y < mask.rows; ++y) {
+      std::copy_n(mask.ptr<std::uint8_t>(y), mask.cols, region.data() + static_cast<std::size_t>(y) * mask.cols);
+    }
   }
   return region;
 }

@@ -47,6 +47,8 @@ class Costmap {
     return geometry_.contains(c) ? isLethal(geometry_.index(c)) : true;
   }
   bool isUnknown(std::size_t index) const { return unknown_[index] != 0; }
+  /// One byte per cell, row-major: non-zero where lethal (for whole-grid operations).
+  const std::vector<std::uint8_t>& lethalMask() const { return lethal_; }
   /// Cost of entering the cell, >= 1 for traversable cells (meaningless when lethal).
   float stepCost(std::size_t index) const { return step_cost_[index]; }
   /// Distance from the cell centre to the nearest occupied cell centre [m], capped at
