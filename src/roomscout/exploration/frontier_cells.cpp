@@ -157,11 +157,10 @@ std::vector<Cell> reachableFrontierCells(const OccupancyGrid& grid, const Costma
   } else {
     candidates = unknown;
   }
-  for (int y = 2; y < h - 2; ++y) {
-    const std::uint8_t* row = candidates.ptr<std::uint8_t>(y);
-    for (int x = 2; x < w - 2; ++x) {
-      if (row[x] && isFrontier(x, y)) out.push_back({x, y});
-    }
+  std::vector<cv::Point> points;  // row-major, as findNonZero returns them
+  cv::findNonZero(candidates(cv::Rect(2, 2, w - 4, h - 4)), points);
+  for (const cv::Point& p : points) {
+    if (isFrontier(p.x + 2, p.y + 2)) out.push_back({p.x + 2, p.y + 2});
   }
   return out;
 }
