@@ -1,5 +1,7 @@
 #include "roomscout/exploration/frontier_cells.hpp"
 
+#include "roomscout/core/errors.hpp"
+
 #include <gtest/gtest.h>
 
 #include <random>
@@ -71,6 +73,17 @@ TEST(FrontierCellsTest, CountAgreesWithTheFullScan) {
           << "trial " << trial << " limit " << limit;
     }
   }
+}
+
+// A costmap computed for another grid is refused, not read out of bounds.
+TEST(FrontierCellsTest, RejectsACostmapOfAnotherGrid) {
+  OccupancyGrid grid = makeGrid(60, 40, CellState::kFree);
+  const OccupancyGrid small = makeGrid(20, 20, CellState::kFree);
+  Costmap costmap;
+  costmap.update(small);
+  const Vec2 robot(0.5, 0.5);
+  EXPECT_THROW(reachableFrontierCells(grid, costmap, 4, nullptr, &robot), InvalidArgument);
+  EXPECT_THROW(robotFreeRegion(grid, costmap, robot), InvalidArgument);
 }
 
 }  // namespace

@@ -6,6 +6,8 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include "roomscout/core/errors.hpp"
+
 namespace roomscout {
 
 namespace {
@@ -54,6 +56,13 @@ class FrontierCellTest {
   const std::vector<std::uint8_t>* exhausted_;
   int w_, h_, r_;
 };
+
+/// Throws unless `costmap` was computed for a grid of `grid`'s size (cells are read by index).
+void requireMatchingCostmap(const OccupancyGrid& grid, const Costmap& costmap) {
+  if (costmap.lethalMask().size() != grid.geometry().cellCount()) {
+    throw InvalidArgument("frontier cells: the costmap was not computed for this grid");
+  }
+}
 
 /// The known-free, non-lethal cell robotFreeRegion starts from, if any.
 std::optional<Cell> regionStart(const OccupancyGrid& grid, const Costmap& costmap, const Vec2& from_m) {
@@ -138,6 +147,7 @@ std::vector<Cell> reachableFrontierCells(const OccupancyGrid& grid, const Costma
                                          int obstacle_l1_cells,
                                          const std::vector<std::uint8_t>* exhausted,
                                          const Vec2* robot_m) {
+  requireMatchingCostmap(grid, costmap);
   const GridGeometry& g = grid.geometry();
   const int w = g.width(), h = g.height();
   std::vector<Cell> out;
@@ -169,6 +179,7 @@ std::size_t countReachableFrontierCells(const OccupancyGrid& grid, const Costmap
                                         int obstacle_l1_cells,
                                         const std::vector<std::uint8_t>* exhausted,
                                         const Vec2& robot_m, std::size_t limit) {
+  requireMatchingCostmap(grid, costmap);
   const GridGeometry& g = grid.geometry();
   if (g.width() < 5 || g.height() < 5 || limit == 0) return 0;
   const std::optional<Cell> start = regionStart(grid, costmap, robot_m);
@@ -191,6 +202,7 @@ std::size_t countReachableFrontierCells(const OccupancyGrid& grid, const Costmap
 }
 
 std::vector<std::uint8_t> robotFreeRegion(const OccupancyGrid& grid, const Costmap& costmap, const Vec2& from_m) {
+  requireMatchingCostmap(grid, costmap);
   std::vector<std::uint8_t> region(grid.geometry().cellCount(), 0);
   if (const std::optional<Cell> start = regionStart(grid, costmap, from_m)) {
     const cv::Mat mask = freeRegionMask(grid, costmap, *start);
