@@ -7,6 +7,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "roomscout/core/errors.hpp"
+#include "roomscout/maps/grid_image.hpp"
 
 namespace roomscout {
 
@@ -86,19 +87,12 @@ std::optional<Cell> regionStart(const OccupancyGrid& grid, const Costmap& costma
   return start;
 }
 
-/// The grid's cell states as an image (a view, no copy).
-cv::Mat stateView(const OccupancyGrid& grid) {
-  const GridGeometry& g = grid.geometry();
-  static_assert(sizeof(CellState) == 1);
-  return cv::Mat(g.height(), g.width(), CV_8U, const_cast<CellState*>(grid.states().data()));
-}
-
 /// The known-free, non-lethal cells 4-connected to `start` (which must be one), as 1 in an
 /// image of the grid's size (OpenCV's scanline flood fill on the image of such cells).
 cv::Mat freeRegionMask(const OccupancyGrid& grid, const Costmap& costmap, Cell start) {
   const GridGeometry& g = grid.geometry();
   const cv::Mat lethal(g.height(), g.width(), CV_8U, const_cast<std::uint8_t*>(costmap.lethalMask().data()));
-  const cv::Mat open = (stateView(grid) == static_cast<std::uint8_t>(CellState::kFree)) & (lethal == 0);
+  const cv::Mat open = (maps::stateView(grid) == static_cast<std::uint8_t>(CellState::kFree)) & (lethal == 0);
   cv::Mat mask = cv::Mat::zeros(g.height() + 2, g.width() + 2, CV_8U);
   cv::floodFill(open, mask, cv::Point(start.x, start.y), cv::Scalar(), nullptr, cv::Scalar(), cv::Scalar(),
                 4 | cv::FLOODFILL_MASK_ONLY | (1 << 8));
@@ -155,7 +149,7 @@ std::vector<Cell> reachableFrontierCells(const OccupancyGrid& grid, const Costma
   const FrontierCellTest isFrontier(grid, costmap, obstacle_l1_cells, exhausted);
   // Candidates: unknown cells (with the robot: only those with a 4-neighbour in its region),
   // found by whole-image operations; the full test runs on these only, in row-major order.
-  const cv::Mat unknown = stateView(grid) == static_cast<std::uint8_t>(CellState::kUnknown);
+  const cv::Mat unknown = maps::stateView(grid) == static_cast<std::uint8_t>(CellState::kUnknown);
   cv::Mat candidates;
   if (robot_m != nullptr) {
     const std::optional<Cell> start = regionStart(grid, costmap, *robot_m);

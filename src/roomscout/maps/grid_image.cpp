@@ -1,7 +1,6 @@
 #include "roomscout/maps/grid_image.hpp"
 
 #include <algorithm>
-#include <cstring>
 
 #include <opencv2/imgproc.hpp>
 
@@ -10,28 +9,19 @@
 
 namespace roomscout::maps {
 
-cv::Mat stateImage(const OccupancyGrid& grid) {
-  cv::Mat image;
-  stateImage(grid, image);
-  return image;
+cv::Mat stateView(const OccupancyGrid& grid) {
+  const GridGeometry& g = grid.geometry();
+  static_assert(sizeof(CellState) == 1);
+  return cv::Mat(g.height(), g.width(), CV_8U, const_cast<CellState*>(grid.states().data()));
 }
 
-void stateImage(const OccupancyGrid& grid, cv::Mat& image) {
-  const GridGeometry& g = grid.geometry();
-  image.create(g.height(), g.width(), CV_8U);
-  // The image's pixel values are the CellState values.
-  const CellState* states = grid.states().data();
-  for (int y = 0; y < g.height(); ++y) {
-    std::memcpy(image.ptr<std::uint8_t>(y), states + g.index(Cell{0, y}), static_cast<std::size_t>(g.width()));
-  }
-}
+cv::Mat stateImage(const OccupancyGrid& grid) { return stateView(grid).clone(); }
+
+void stateImage(const OccupancyGrid& grid, cv::Mat& image) { stateView(grid).copyTo(image); }
 
 std::size_t knownCellCount(const OccupancyGrid& grid) {
-  const GridGeometry& g = grid.geometry();
-  if (g.cellCount() == 0) return 0;
   // Unknown is 0, free and occupied are not.
-  return static_cast<std::size_t>(
-      cv::countNonZero(cv::Mat(g.height(), g.width(), CV_8U, const_cast<CellState*>(grid.states().data()))));
+  return grid.geometry().cellCount() == 0 ? 0 : static_cast<std::size_t>(cv::countNonZero(stateView(grid)));
 }
 
 cv::Rect knownBounds(const cv::Mat& states, int margin) {

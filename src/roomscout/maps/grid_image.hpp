@@ -8,13 +8,17 @@
 
 namespace roomscout::maps {
 
-/// One CellState value per cell (CV_8U), row y = grid row y.
+/// The grid's own state bytes as an image (CV_8U, one CellState value per cell, row y = grid
+/// row y), without a copy: valid while the grid lives, and read-only (writing would put the
+/// states out of step with the log-odds).
+cv::Mat stateView(const OccupancyGrid& grid);
+
+/// A copy of stateView(grid).
 cv::Mat stateImage(const OccupancyGrid& grid);
 /// The same into `image`, reusing its buffer when it already has the grid's size.
 void stateImage(const OccupancyGrid& grid, cv::Mat& image);
 
-/// Number of cells the grid knows (free or occupied): the same as counting
-/// `grid.state(i) != CellState::kUnknown`, several times faster.
+/// Number of cells the grid knows (free or occupied).
 std::size_t knownCellCount(const OccupancyGrid& grid);
 
 /// The smallest rectangle holding every known (free or occupied) cell, grown by `margin`

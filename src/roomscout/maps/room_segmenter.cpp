@@ -379,7 +379,7 @@ std::vector<ParameterRef> RoomSegmenterOptions::parameters() {
 RoomSegmenter::RoomSegmenter(const RoomSegmenterOptions& options) : options_(options) { options_.validate(); }
 
 RoomSegmentation RoomSegmenter::segment(const OccupancyGrid& grid) const {
-  return segment(maps::stateImage(grid), grid.geometry().resolution_m());
+  return segment(maps::stateView(grid), grid.geometry().resolution_m());
 }
 
 RoomSegmentation RoomSegmenter::segment(const cv::Mat& states, double resolution_m) const {

@@ -68,7 +68,7 @@ std::vector<ParameterRef> TopologyBuilderOptions::parameters() {
 TopologyBuilder::TopologyBuilder(const TopologyBuilderOptions& options) : options_(options) { options_.validate(); }
 
 TopologicalMap TopologyBuilder::build(const OccupancyGrid& grid, const SemanticMap* semantic) const {
-  return build(maps::stateImage(grid), grid.geometry(), semantic);
+  return build(maps::stateView(grid), grid.geometry(), semantic);
 }
 
 TopologicalMap TopologyBuilder::build(const cv::Mat& states, const GridGeometry& geometry,
