@@ -83,7 +83,7 @@ TEST(FrontierCellsTest, RejectsACostmapOfAnotherGrid) {
   costmap.update(small);
   const Vec2 robot(0.5, 0.5);
   EXPECT_THROW(reachableFrontierCells(grid, costmap, 4, nullptr, &robot), InvalidArgument);
-  EXPECT_THROW(robotFreeRegion(grid, costmap, robot), InvalidArgument);
+  EXPECT_THROW(countReachableFrontierCells(grid, costmap, 4, nullptr, robot, 2), InvalidArgument);
 }
 
 }  // namespace

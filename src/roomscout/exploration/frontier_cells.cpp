@@ -65,7 +65,8 @@ void requireMatchingCostmap(const OccupancyGrid& grid, const Costmap& costmap) {
   }
 }
 
-/// The known-free, non-lethal cell robotFreeRegion starts from, if any.
+/// The known-free, non-lethal cell the robot's free region starts from (the robot's own, else the
+/// nearest within 1 m), if any.
 std::optional<Cell> regionStart(const OccupancyGrid& grid, const Costmap& costmap, const Vec2& from_m) {
   const GridGeometry& g = grid.geometry();
   auto open = [&](std::size_t i) { return grid.isFree(i) && !costmap.isLethal(i); };
@@ -193,18 +194,6 @@ std::size_t countReachableFrontierCells(const OccupancyGrid& grid, const Costmap
     return true;
   });
   return found.size();
-}
-
-std::vector<std::uint8_t> robotFreeRegion(const OccupancyGrid& grid, const Costmap& costmap, const Vec2& from_m) {
-  requireMatchingCostmap(grid, costmap);
-  std::vector<std::uint8_t> region(grid.geometry().cellCount(), 0);
-  if (const std::optional<Cell> start = regionStart(grid, costmap, from_m)) {
-    const cv::Mat mask = freeRegionMask(grid, costmap, *start);
-    for (int y = 0; y < mask.rows; ++y) {
-      std::copy_n(mask.ptr<std::uint8_t>(y), mask.cols, region.data() + static_cast<std::size_t>(y) * mask.cols);
-    }
-  }
-  return region;
 }
 
 void knownCellsBox(const OccupancyGrid& grid, const Vec2& robot, Vec2& min_m, Vec2& max_m) {

@@ -19,7 +19,8 @@ namespace roomscout {
 /// cells of the grid border are skipped, as in the originals. Row-major order.
 /// Cells flagged non-zero in `exhausted` (one byte per cell, may be null) are skipped too.
 /// With `robot_m`, a cell also needs a 4-neighbour in the known-free, non-lethal region
-/// connected to the robot (a deviation of our end tests: the originals count frontier cells
+/// 4-connected to the robot's cell (or, when that cell is not such a cell, to the nearest one
+/// within 1 m; none: no cell qualifies) (a deviation of our end tests: the originals count frontier cells
 /// the robot's footprint can never approach, e.g. in a toilet cubicle narrower than the robot,
 /// and then never end).
 std::vector<Cell> reachableFrontierCells(const OccupancyGrid& grid, const Costmap& costmap,
@@ -34,10 +35,6 @@ std::size_t countReachableFrontierCells(const OccupancyGrid& grid, const Costmap
                                         int obstacle_l1_cells,
                                         const std::vector<std::uint8_t>* exhausted,
                                         const Vec2& robot_m, std::size_t limit);
-
-/// The known-free, non-lethal cells 4-connected to the cell of `from_m` (or, when that cell is
-/// not such a cell, to the nearest one within 1 m), as a one-byte-per-cell mask.
-std::vector<std::uint8_t> robotFreeRegion(const OccupancyGrid& grid, const Costmap& costmap, const Vec2& from_m);
 
 /// Bounding box [m] of the known (free or occupied) cells; the point `fallback_m` when nothing
 /// is known. The box RRT detectors sample from.
