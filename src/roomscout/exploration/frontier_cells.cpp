@@ -198,34 +198,13 @@ std::size_t countReachableFrontierCells(const OccupancyGrid& grid, const Costmap
 
 void knownCellsBox(const OccupancyGrid& grid, const Vec2& robot, Vec2& min_m, Vec2& max_m) {
   const GridGeometry& g = grid.geometry();
-  int x0 = g.width(), y0 = g.height(), x1 = -1, y1 = -1;
-  for (int y = 0; y < g.height(); ++y) {
-    const std::size_t row = static_cast<std::size_t>(y) * g.width();
-    int first = -1, last = -1;
-    for (int x = 0; x < g.width(); ++x) {
-      if (!grid.isUnknown(row + x)) {
-        first = x;
-        break;
-      }
-    }
-    if (first < 0) continue;
-    for (int x = g.width() - 1; x >= first; --x) {
-      if (!grid.isUnknown(row + x)) {
-        last = x;
-        break;
-      }
-    }
-    x0 = std::min(x0, first);
-    x1 = std::max(x1, last);
-    y0 = std::min(y0, y);
-    y1 = y;
-  }
-  if (x1 < 0) {
+  const cv::Rect known = g.cellCount() == 0 ? cv::Rect() : maps::knownBounds(maps::stateView(grid), 0);
+  if (known.empty()) {
     min_m = max_m = robot;
     return;
   }
-  min_m = g.origin_m() + Vec2(x0 * g.resolution_m(), y0 * g.resolution_m());
-  max_m = g.origin_m() + Vec2((x1 + 1) * g.resolution_m(), (y1 + 1) * g.resolution_m());
+  min_m = g.origin_m() + Vec2(known.x * g.resolution_m(), known.y * g.resolution_m());
+  max_m = g.origin_m() + Vec2(known.br().x * g.resolution_m(), known.br().y * g.resolution_m());
 }
 
 void markDisc(std::vector<std::uint8_t>& mask, const GridGeometry& geometry, const Vec2& p_m,

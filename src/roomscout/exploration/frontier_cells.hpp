@@ -19,10 +19,10 @@ namespace roomscout {
 /// cells of the grid border are skipped, as in the originals. Row-major order.
 /// Cells flagged non-zero in `exhausted` (one byte per cell, may be null) are skipped too.
 /// With `robot_m`, a cell also needs a 4-neighbour in the known-free, non-lethal region
-/// 4-connected to the robot's cell (or, when that cell is not such a cell, to the nearest one
-/// within 1 m; none: no cell qualifies) (a deviation of our end tests: the originals count frontier cells
-/// the robot's footprint can never approach, e.g. in a toilet cubicle narrower than the robot,
-/// and then never end).
+/// 4-connected to the robot's cell, or, when that cell is not such a cell, to the nearest one
+/// within 1 m; without one, no cell qualifies. This is a deviation of our end tests: the
+/// originals count frontier cells the robot's footprint can never approach, e.g. in a toilet
+/// cubicle narrower than the robot, and then never end.
 std::vector<Cell> reachableFrontierCells(const OccupancyGrid& grid, const Costmap& costmap,
                                          int obstacle_l1_cells,
                                          const std::vector<std::uint8_t>* exhausted = nullptr,
