@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
+#include <functional>
 #include <limits>
 
 #include "roomscout/core/errors.hpp"
@@ -60,27 +62,44 @@ std::vector<ParameterRef> ImprovedRrtOptions::parameters() {
 }
 
 /// Summed-area table of (unknown - occupied) over a grid, so that SMMR-Explore's
-/// informationRectangleGain costs O(1) per point.
+/// informationRectangleGain costs O(1) per point. Kept up to date between builds: only the
+/// rows whose cell states changed since the last build get their row sums recomputed, and the
+/// table is re-accumulated from the first such row down (a vector add per row), so a build
+/// costs a scan for changed rows instead of a serial pass over every cell.
 class GainTable {
  public:
   void build(const OccupancyGrid& grid) {
     const GridGeometry& g = grid.geometry();
-    w_ = g.width();
-    h_ = g.height();
-    sum_.resize(static_cast<std::size_t>(w_ + 1) * (h_ + 1));
-    std::fill(sum_.begin(), sum_.begin() + w_ + 1, 0);
-    // Unknown +1, free 0, occupied -1, by table lookup: no data-dependent branch per cell.
-    constexpr int kValue[3] = {1, 0, -1};
+    const auto* states = reinterpret_cast<const std::uint8_t*>(grid.states().data());
+    const bool resized = g.width() != w_ || g.height() != h_;
+    if (resized) {
+      w_ = g.width();
+      h_ = g.height();
+      const std::size_t cells = static_cast<std::size_t>(w_) * h_;
+      snapshot_.assign(states, states + cells);
+      row_sum_.assign(static_cast<std::size_t>(w_ + 1) * h_, 0);
+      sum_.assign(static_cast<std::size_t>(w_ + 1) * (h_ + 1), 0);
+    }
+    int first = resized ? 0 : h_;
     for (int y = 0; y < h_; ++y) {
       const std::size_t row = static_cast<std::size_t>(y) * w_;
-      const int* above = &sum_[static_cast<std::size_t>(y) * (w_ + 1)];
-      int* out = &sum_[static_cast<std::size_t>(y + 1) * (w_ + 1)];
-      out[0] = 0;
-      int run = 0;
-      for (int x = 0; x < w_; ++x) {
-        run += kValue[static_cast<int>(grid.state(row + x))];
-        out[x + 1] = above[x + 1] + run;
+      if (!resized) {
+        if (std::memcmp(snapshot_.data() + row, states + row, static_cast<std::size_t>(w_)) == 0) continue;
+        std::memcpy(snapshot_.data() + row, states + row, static_cast<std::size_t>(w_));
+        first = std::min(first, y);
       }
+      // Unknown +1, free 0, occupied -1: one minus the state byte.
+      int* out = &row_sum_[static_cast<std::size_t>(y) * (w_ + 1)];
+      int run = 0;
+      out[0] = 0;
+      for (int x = 0; x < w_; ++x) out[x + 1] = run += 1 - static_cast<int>(states[row + x]);
+    }
+    const std::size_t stride = static_cast<std::size_t>(w_) + 1;
+    for (int y = first; y < h_; ++y) {
+      const int* above = &sum_[y * stride];
+      const int* rs = &row_sum_[y * stride];
+      int* out = &sum_[(y + 1) * stride];
+      std::transform(above, above + stride, rs, out, std::plus<>());
     }
   }
   /// Sum over cells [x0, x1) x [y0, y1), clipped to the grid.
@@ -95,7 +114,9 @@ class GainTable {
 
  private:
   int cat(int x, int y) const { return sum_[static_cast<std::size_t>(y) * (w_ + 1) + x]; }
-  int w_ = 0, h_ = 0;
+  int w_ = -1, h_ = -1;
+  std::vector<std::uint8_t> snapshot_;  ///< cell states at the last build
+  std::vector<int> row_sum_;            ///< per row: prefix sums of its cell values
   std::vector<int> sum_;
 };
 
