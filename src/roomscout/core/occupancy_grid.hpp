@@ -12,6 +12,7 @@ namespace roomscout {
 /// What is known of a cell. The values are fixed: code indexes tables by them and ORs them
 /// as bits (free 1, occupied 2; e.g. mmpf's coarse grid, improved_rrt's gain table).
 enum class CellState : std::uint8_t { kUnknown = 0, kFree = 1, kOccupied = 2 };
+static_assert(sizeof(CellState) == 1);
 static_assert(static_cast<int>(CellState::kUnknown) == 0 && static_cast<int>(CellState::kFree) == 1 &&
               static_cast<int>(CellState::kOccupied) == 2);
 
@@ -61,6 +62,8 @@ class OccupancyGrid {
 
   /// Cell states as one byte per cell, row-major (for bulk analysis).
   const std::vector<CellState>& states() const { return states_; }
+  /// The same bytes as plain integers (the CellState values), for counting and comparing.
+  const std::uint8_t* stateBytes() const { return reinterpret_cast<const std::uint8_t*>(states_.data()); }
 
  private:
   void add(std::size_t index, float delta) {

@@ -70,7 +70,7 @@ class GainTable {
  public:
   void build(const OccupancyGrid& grid) {
     const GridGeometry& g = grid.geometry();
-    const auto* states = reinterpret_cast<const std::uint8_t*>(grid.states().data());
+    const std::uint8_t* states = grid.stateBytes();
     const bool resized = g.width() != w_ || g.height() != h_;
     if (resized) {
       w_ = g.width();

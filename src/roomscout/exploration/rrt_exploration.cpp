@@ -80,7 +80,7 @@ double unknownAreaInDisc(const OccupancyGrid& grid, const Vec2& p, double radius
     const std::size_t row = static_cast<std::size_t>(y) * g.width();
     // Interior cells lie in the disc: a branch-free count of unknown state bytes.
     constexpr auto kUnknownByte = static_cast<std::uint8_t>(CellState::kUnknown);
-    const auto* states = reinterpret_cast<const std::uint8_t*>(grid.states().data()) + row;
+    const std::uint8_t* states = grid.stateBytes() + row;
     for (int x = x0 + 2; x <= x1 - 2; ++x) count += states[x] == kUnknownByte;
     for (int x = x0; x <= x1 && x <= x0 + 1; ++x) {
       if (states[x] == kUnknownByte && (g.centerOf(Cell{x, y}) - p).squaredNorm() <= r2) ++count;

@@ -11,8 +11,7 @@ namespace roomscout::maps {
 
 cv::Mat stateView(const OccupancyGrid& grid) {
   const GridGeometry& g = grid.geometry();
-  static_assert(sizeof(CellState) == 1);
-  return cv::Mat(g.height(), g.width(), CV_8U, const_cast<CellState*>(grid.states().data()));
+  return cv::Mat(g.height(), g.width(), CV_8U, const_cast<std::uint8_t*>(grid.stateBytes()));
 }
 
 cv::Mat stateImage(const OccupancyGrid& grid) { return stateView(grid).clone(); }
