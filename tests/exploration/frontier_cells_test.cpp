@@ -84,6 +84,9 @@ TEST(FrontierCellsTest, RejectsACostmapOfAnotherGrid) {
   const Vec2 robot(0.5, 0.5);
   EXPECT_THROW(reachableFrontierCells(grid, costmap, 4, nullptr, &robot), InvalidArgument);
   EXPECT_THROW(countReachableFrontierCells(grid, costmap, 4, nullptr, robot, 2), InvalidArgument);
+  EXPECT_THROW(nearestGoalCell(grid, costmap, robot, 1.0), InvalidArgument);
+  std::vector<std::uint8_t> exhausted;
+  EXPECT_THROW(markUnknownPockets(exhausted, grid, costmap, {Cell{5, 5}}, 1.0, 0.0), InvalidArgument);
 }
 
 }  // namespace

@@ -9,8 +9,9 @@
 
 namespace roomscout {
 
-/// What is known of a cell. The values are fixed: code indexes tables by them and ORs them
-/// as bits (free 1, occupied 2; e.g. mmpf's coarse grid, improved_rrt's gain table).
+/// What is known of a cell. The values are fixed: code indexes tables by them, ORs them as
+/// bits and counts with them (free 1, occupied 2; e.g. mmpf's coarse grid, improved_rrt's gain
+/// table: 1 - state).
 enum class CellState : std::uint8_t { kUnknown = 0, kFree = 1, kOccupied = 2 };
 static_assert(sizeof(CellState) == 1);
 static_assert(static_cast<int>(CellState::kUnknown) == 0 && static_cast<int>(CellState::kFree) == 1 &&

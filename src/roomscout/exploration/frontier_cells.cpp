@@ -223,6 +223,7 @@ void markDisc(std::vector<std::uint8_t>& mask, const GridGeometry& geometry, con
 
 std::optional<Vec2> nearestGoalCell(const OccupancyGrid& grid, const Costmap& costmap, const Vec2& p_m,
                                     double max_radius_m, bool free_only) {
+  requireMatchingCostmap(grid, costmap);
   const GridGeometry& g = grid.geometry();
   const Cell c = g.cellOf(p_m);
   const int r = static_cast<int>(std::ceil(max_radius_m / g.resolution_m()));
@@ -247,6 +248,7 @@ std::optional<Vec2> nearestGoalCell(const OccupancyGrid& grid, const Costmap& co
 
 void markUnknownPockets(std::vector<std::uint8_t>& exhausted, const OccupancyGrid& grid, const Costmap& costmap,
                         const std::vector<Cell>& cells, double min_area_m2, double min_opening_m) {
+  requireMatchingCostmap(grid, costmap);
   const GridGeometry& g = grid.geometry();
   if (exhausted.size() != g.cellCount()) exhausted.assign(g.cellCount(), 0);
   if (cells.empty()) return;

@@ -1,7 +1,8 @@
 #pragma once
 // Grid-cell helpers shared by the SMMR-Explore baselines (improved_rrt, mmpf) and the end test
 // we add to rrt: SMMR-Explore's "reachable frontier cell" scan, and snapping a point to the
-// nearest cell a goal may lie in.
+// nearest cell a goal may lie in. Every function taking a costmap reads it by the grid's cell
+// index and throws InvalidArgument when it was computed for a grid of another size.
 
 #include <cstdint>
 #include <optional>
