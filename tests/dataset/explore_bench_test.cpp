@@ -8,6 +8,8 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <string>
+#include <tuple>
 
 #include "roomscout/exploration/strategy_registry.hpp"
 #include "roomscout/io/map_server.hpp"
