@@ -68,6 +68,7 @@ double unknownAreaInDisc(const OccupancyGrid& grid, const Vec2& p, double radius
   const Cell c = g.cellOf(p);
   const int r = static_cast<int>(std::ceil(radius_m / res));
   const double r2 = radius_m * radius_m;
+  constexpr auto kUnknownByte = static_cast<std::uint8_t>(CellState::kUnknown);
   int count = 0;
   for (int y = std::max(0, c.y - r); y <= std::min(g.height() - 1, c.y + r); ++y) {
     const double dy = g.origin_m().y() + (y + 0.5) * res - p.y();
@@ -78,16 +79,15 @@ double unknownAreaInDisc(const OccupancyGrid& grid, const Vec2& p, double radius
     const int x0 = std::max(0, static_cast<int>(std::floor((p.x() - half - g.origin_m().x()) / res - 0.5)));
     const int x1 = std::min(g.width() - 1, static_cast<int>(std::ceil((p.x() + half - g.origin_m().x()) / res - 0.5)));
     const std::size_t row = static_cast<std::size_t>(y) * g.width();
-    // Interior cells lie in the disc: a branch-free count of unknown state bytes.
-    constexpr auto kUnknownByte = static_cast<std::uint8_t>(CellState::kUnknown);
+    // Interior cells lie in the disc: a branch-free count of unknown state bytes. The two
+    // cells at each end (fewer in a short row) take the exact test.
     const std::uint8_t* states = grid.stateBytes() + row;
+    const auto edgeCell = [&](int x) {
+      return states[x] == kUnknownByte && (g.centerOf(Cell{x, y}) - p).squaredNorm() <= r2;
+    };
     for (int x = x0 + 2; x <= x1 - 2; ++x) count += states[x] == kUnknownByte;
-    for (int x = x0; x <= x1 && x <= x0 + 1; ++x) {
-      if (states[x] == kUnknownByte && (g.centerOf(Cell{x, y}) - p).squaredNorm() <= r2) ++count;
-    }
-    for (int x = std::max(x1 - 1, x0 + 2); x <= x1; ++x) {
-      if (states[x] == kUnknownByte && (g.centerOf(Cell{x, y}) - p).squaredNorm() <= r2) ++count;
-    }
+    for (int x = x0; x <= x1 && x <= x0 + 1; ++x) count += edgeCell(x);
+    for (int x = std::max(x1 - 1, x0 + 2); x <= x1; ++x) count += edgeCell(x);
   }
   return count * res * res;
 }
