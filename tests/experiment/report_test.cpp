@@ -140,6 +140,43 @@ TEST(Report, WritesEveryTable) {
   fs::remove_all(dir);
 }
 
+TEST(Report, NamesTheMethodsWhoseSeedsAllGaveTheSameRun) {
+  // mmpf: two identical seeds in each house; rrt: two different seeds; topo: identical in the
+  // small house, different in the medium one; nearest_frontier: one seed only, so it says nothing.
+  const fs::path dir = fs::temp_directory_path() / "roomscout_report_same_seed";
+  fs::create_directories(dir);
+  const fs::path file = dir / "results.jsonl";
+  {
+    std::ofstream out(file);
+    const auto record = [&](const char* world, const char* method, int seed, double t98) {
+      out << R"({"world": ")" << world << R"(", "world_group": "builtin", "method": ")" << method
+          << R"(", "seed": )" << seed << R"(, "exploration_rate": 0.99, "t98_s": )" << t98
+          << R"(, "l98_m": 20.0})" << "\n";
+    };
+    for (const char* world : {"small_house", "medium_house"}) {
+      record(world, "mmpf", 1, 100.0);
+      record(world, "mmpf", 2, 100.0);
+      record(world, "rrt", 1, 100.0);
+      record(world, "rrt", 2, 120.0);
+    }
+    record("small_house", "topo", 1, 90.0);
+    record("small_house", "topo", 2, 90.0);
+    record("medium_house", "topo", 1, 90.0);
+    record("medium_house", "topo", 2, 95.0);
+    record("small_house", "nearest_frontier", 1, 80.0);
+  }
+  const Report report = buildReport(loadResults({file}));
+  EXPECT_TRUE(report.table1.at({"small_house", "mmpf"}).same_every_seed);
+  EXPECT_FALSE(report.table1.at({"small_house", "rrt"}).same_every_seed);
+  EXPECT_TRUE(report.table1.at({"small_house", "topo"}).same_every_seed);
+  EXPECT_FALSE(report.table1.at({"medium_house", "topo"}).same_every_seed);
+  EXPECT_FALSE(report.table1.at({"small_house", "nearest_frontier"}).same_every_seed);
+  EXPECT_EQ(report.methodsSameEverySeed(), std::vector<std::string>{"mmpf"});
+  const std::string md = table1Markdown(report);
+  EXPECT_TRUE(contains(md, "Every seed gave the same run for MMPF (")) << md;
+  fs::remove_all(dir);
+}
+
 TEST(Report, MissingInputIsNamed) {
   try {
     loadResults({kData / "nothing_here"});

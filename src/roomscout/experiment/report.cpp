@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <set>
 #include <sstream>
+#include <tuple>
 
 #include "roomscout/core/errors.hpp"
 #include "roomscout/experiment/paper_reference.hpp"
@@ -256,6 +257,9 @@ Report buildReport(const ResultSet& results) {
     std::vector<double> t98, l98, revisits, ratio;
   };
   std::map<std::pair<std::string, std::string>, Samples> cells;
+  // (world, method) -> distinct (final rate, T98, L98) of its seeds, and its episode count
+  using Outcome = std::tuple<double, std::optional<double>, std::optional<double>>;
+  std::map<std::pair<std::string, std::string>, std::pair<std::set<Outcome>, std::size_t>> outcomes;
   struct MapSamples {
     std::size_t episodes = 0;
     std::vector<double> storage_kb, median_s, p95_s;
@@ -278,6 +282,9 @@ Report buildReport(const ResultSet& results) {
     if (e.t98_s) c.t98.push_back(*e.t98_s);
     if (e.l98_m) c.l98.push_back(*e.l98_m);
     if (e.revisits) c.revisits.push_back(*e.revisits);
+    auto& o = outcomes[{e.key.world, e.key.method}];
+    o.first.emplace(e.exploration_rate, e.t98_s, e.l98_m);
+    ++o.second;
     if (e.oracle) {
       oracles[row].emplace(e.key.world, *e.oracle);
       if (e.l98_m && e.oracle->length_m > 0.0) c.ratio.push_back(*e.l98_m / e.oracle->length_m);
@@ -315,6 +322,16 @@ Report buildReport(const ResultSet& results) {
     s.revisits = Stat::of(c.revisits);
     s.l98_oracle_ratio = Stat::of(c.ratio);
   }
+  // A row's cell repeats itself when each of its worlds run with several seeds had one outcome.
+  std::map<std::pair<std::string, std::string>, std::pair<bool, bool>> repeats;  // (several, all same)
+  for (const EpisodeSummary& e : results.episodes) {
+    const auto& [distinct, count] = outcomes.at({e.key.world, e.key.method});
+    if (count < 2) continue;
+    auto& r = repeats.try_emplace({rowNameOf(e), e.key.method}, false, true).first->second;
+    r.first = true;
+    r.second = r.second && distinct.size() == 1;
+  }
+  for (const auto& [key, r] : repeats) report.table1[key].same_every_seed = r.first && r.second;
   for (const auto& [key, c] : map_cells) {
     MapStats& s = report.table3[key];
     s.episodes = c.episodes;
@@ -336,6 +353,36 @@ Report buildReport(const ResultSet& results) {
     s.viewpoints = Stat::of(viewpoints);
   }
   return report;
+}
+
+std::vector<std::string> Report::methodsSameEverySeed() const {
+  std::vector<std::string> out;
+  for (const std::string& method : methods) {
+    bool several = false, same = true;
+    for (const ReportRow& row : rows) {
+      const auto it = table1.find({row.name, method});
+      if (it == table1.end()) continue;
+      // Rows without several seeds of a world do not say either way.
+      const bool repeated = it->second.same_every_seed;
+      several = several || repeated;
+      if (!repeated && it->second.episodes > row.worlds) same = false;
+    }
+    if (several && same) out.push_back(method);
+  }
+  return out;
+}
+
+std::string sameEverySeedLine(const Report& report) {
+  const std::vector<std::string> methods = report.methodsSameEverySeed();
+  if (methods.empty()) return {};
+  std::string names;
+  for (std::size_t i = 0; i < methods.size(); ++i) {
+    names += (i == 0 ? "" : i + 1 == methods.size() ? " and " : ", ") + methodLabel(methods[i]);
+  }
+  return "Every seed gave the same run for " + names +
+         " (the same final rate, T98 and L98 in every seed of a world): these methods make no "
+         "random choice, so on noise-free sensors (the default) the seed changes nothing and "
+         "their sd is 0 by construction.";
 }
 
 std::string table1Description() {
@@ -518,8 +565,10 @@ plots::HtmlTable table3Cells(const Report& report) {
 }
 
 std::string table1Markdown(const Report& report) {
+  const std::string same = sameEverySeedLine(report);
   const std::string intro = "# Table I: exploration time and trajectory length\n\n" +
-                            table1Description() + "\n\n" + sourcesLine(report) + ".\n\n";
+                            table1Description() + "\n\n" + (same.empty() ? "" : same + "\n\n") +
+                            sourcesLine(report) + ".\n\n";
   if (report.rows.empty()) return intro + "No episodes.\n";
   plots::HtmlTable table = table1Cells(report);
   table.caption.clear();

@@ -115,6 +115,10 @@ struct MethodStats {
   /// L98 / oracle tour length of the episode's world, over the episodes that reached 98 %
   /// and have an oracle (for group rows: every plan x seed episode pooled).
   Stat l98_oracle_ratio;
+  /// True when the row holds several seeds of some world and, for every such world, all its
+  /// seeds gave the same run (same final rate, T98 and L98): a method without random choices
+  /// on noise-free sensors. Its sd is then 0 by construction, not by luck.
+  bool same_every_seed = false;
 };
 
 /// The oracle tour lengths of a row's worlds (one value per world, the first episode's).
@@ -145,6 +149,9 @@ struct Report {
 
   /// True when some episode has an oracle: Table I then shows L98 / oracle.
   bool hasOracle() const { return !oracle.empty(); }
+  /// Methods whose every row with several seeds of a world has same_every_seed, in
+  /// `methods` order.
+  std::vector<std::string> methodsSameEverySeed() const;
 };
 
 /// Success threshold of Table I's success rate (final exploration rate).
@@ -170,6 +177,8 @@ std::string table2Description();
 std::string table3Description();
 /// "N episodes from `file`, ...".
 std::string sourcesLine(const Report& report);
+/// Names the methods of methodsSameEverySeed() and why their sd is 0; empty when none.
+std::string sameEverySeedLine(const Report& report);
 
 /// The row an episode belongs to: its world when built in, else its world's group.
 std::string rowNameOf(const EpisodeSummary& episode);

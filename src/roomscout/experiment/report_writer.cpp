@@ -35,6 +35,9 @@ plots::HtmlPage reportPage(const Report& report, const std::vector<ReportFigure>
 
   plots::HtmlSection t1{"Table I: exploration time and trajectory length", {}};
   t1.blocks.push_back(plots::HtmlParagraph{plain(table1Description())});
+  if (const std::string same = sameEverySeedLine(report); !same.empty()) {
+    t1.blocks.push_back(plots::HtmlParagraph{plain(same)});
+  }
   t1.blocks.push_back(plainTable(table1Cells(report)));
   t1.blocks.push_back(plots::HtmlParagraph{plain(revisitsDescription())});
   t1.blocks.push_back(plainTable(revisitsCells(report)));
