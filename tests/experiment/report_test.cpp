@@ -113,7 +113,8 @@ TEST(Report, MergesFilesAndKeepsTheFirstRecordOfAKey) {
   const ResultSet set = loadResults({kData / "results_small.jsonl", kData / "results_more.jsonl"});
   EXPECT_EQ(set.duplicates, 1u);
   EXPECT_EQ(set.episodes.size(), 10u);
-  const MethodStats& rrt = buildReport(set).table1.at({"small_house", "rrt"});
+  const Report report = buildReport(set);
+  const MethodStats& rrt = report.table1.at({"small_house", "rrt"});
   EXPECT_EQ(rrt.episodes, 4u);
   EXPECT_DOUBLE_EQ(rrt.t98_s.mean, 115.0);
   EXPECT_NEAR(*rrt.t98_s.sd, std::sqrt(500.0 / 3.0), 1e-12);
