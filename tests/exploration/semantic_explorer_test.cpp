@@ -211,5 +211,33 @@ TEST(SemanticExplorerTest, FinishesTheFirstRoomBeforeEnteringTheSecondWhereRrtDo
   EXPECT_LT(rrt, 0.9) << "rrt left the west room with " << rrt * 100 << " % of it known";
 }
 
+/// A bare 6 x 4 m room drawn as an image (0.1 m pixels, one-pixel walls), the robot 1.95 m from
+/// its west wall: the first scans see all but the two far corners, about 4.3 m away, and the
+/// frontier points left there are slivers (less than min_unknown_m2 of unknown space in their
+/// squares). The robot must still look at them: it used to idle for idle_end_s and end at 97 %.
+TEST(SemanticExplorerTest, LooksIntoTheLastCornersOfItsRoomInsteadOfEndingShort) {
+  sim::World w;
+  w.name = "bare_room";
+  w.source = "test:bare_room";
+  sim::ImageWorld image;
+  image.solid = cv::Mat(40, 60, CV_8U, cv::Scalar(255));
+  image.solid(cv::Rect(1, 1, 58, 38)).setTo(0);
+  image.resolution_m = 0.1;
+  w.image = image;
+  w.start = {1.95, 1.95, 0.0};
+  w.start_given = true;
+  sim::EpisodeConfig config;
+  config.resolve();
+  config.episode.max_time_s = 300.0;
+  const sim::WorldModel model(w, config.world);
+  for (const std::uint64_t seed : {1u, 2u}) {
+    sim::AnalysisMapsObserver semantic(sim::AnalysisMapKind::kSemantic);
+    auto strategy = createStrategy("semantic", seed);
+    const sim::EpisodeResult r = sim::runEpisode(model, config, *strategy, seed, {}, {&semantic});
+    EXPECT_GE(r.exploration_rate, 0.98) << "seed " << seed;
+    EXPECT_FALSE(r.timed_out) << "seed " << seed;
+  }
+}
+
 }  // namespace
 }  // namespace roomscout

@@ -369,20 +369,35 @@ Decision SemanticExplorer::decide(const ExplorationInput& input) {
   if (!points_.empty() && (!has_goal_ || periodic)) {
     last_eval_s_ = input.time_s;
     const std::vector<double> c = costs(input);
+    // Slivers (less than min_unknown_m2 of unknown space in the square) are not worth the trip
+    // while anything else is left. When nothing else was found while idling for idle_end_s,
+    // rather than end short of the last percent, the robot takes the best sliver in the current
+    // room that it has not come within observed_radius_m of (the corners of a room the laser saw
+    // from its middle, say), then the next, until none is left. Other rooms' slivers and those
+    // looked at from close by stay out, so that it does not tour the building's furniture faces
+    // at the end. A sliver goal's square is explored already, so it is chosen afresh each call.
+    const bool idle_over = idle_since_s_ >= 0.0 && input.time_s - idle_since_s_ >= options_.idle_end_s - 1e-9;
+    const bool slivers_wanted = !has_goal_ && (chasing_slivers_ || idle_over);
     double best_score = -std::numeric_limits<double>::infinity();
+    double best_sliver_score = -std::numeric_limits<double>::infinity();
     double goal_score = -std::numeric_limits<double>::infinity();
-    std::size_t best = points_.size();
+    std::size_t best = points_.size(), best_sliver = points_.size();
     for (std::size_t i = 0; i < points_.size(); ++i) {
       if (!std::isfinite(c[i])) continue;  // no path through the costmap
       const SquareAreas a = squareAreas(input.grid, points_[i].p, options_.gain_half_side_m);
-      if (a.unknown_m2 < options_.min_unknown_m2) continue;  // a sliver, not worth the trip
+      const bool sliver = a.unknown_m2 < options_.min_unknown_m2;
+      if (sliver && (!slivers_wanted || visited_[g.index(g.cellOf(points_[i].p))])) continue;
       const bool inside = room_ != 0 && roomOf(input, points_[i].anchor) == room_;
+      if (sliver && !inside) continue;
       const double s = score(a.unknown_m2 - a.occupied_m2, c[i], inside);
-      if (s > best_score) {
-        best_score = s;
-        best = i;
+      double& best_of_kind = sliver ? best_sliver_score : best_score;
+      if (s > best_of_kind) {
+        best_of_kind = s;
+        (sliver ? best_sliver : best) = i;
       }
     }
+    const bool fallback = best == points_.size() && slivers_wanted;
+    if (fallback) best = best_sliver;
     if (has_goal_) {
       const SquareAreas a = squareAreas(input.grid, goal_m_, options_.gain_half_side_m);
       const bool inside = room_ != 0 && roomOf(input, goal_anchor_) == room_;
@@ -392,6 +407,7 @@ Decision SemanticExplorer::decide(const ExplorationInput& input) {
       goal_m_ = points_[best].p;
       goal_anchor_ = points_[best].anchor;
       has_goal_ = true;
+      chasing_slivers_ = fallback;
     }
   }
   if (has_goal_) {

@@ -21,17 +21,19 @@
 // of the known-free cell the edge left from (its anchor); an anchor in no room yet counts as
 // outside. Free cells the segmentation has not labelled yet (seen since its last update) take
 // the room of the nearest labelled cell within label_search_m.
-// The best S becomes the goal. It is re-evaluated when the goal is reached or fails, when its
-// square is explored (less than min_unknown_m2 of unknown space left) or its point lies in the
-// inflation, and every replan_period_s while driving, when another point beats the goal's own
-// score by switch_margin. The goal is not dropped as soon as its own cell is seen: the laser's
+// The best S among points with at least min_unknown_m2 of unknown space in their square
+// becomes the goal (smaller slivers only at the very end, see decide()). It is re-evaluated
+// when the goal is reached or fails, when its square is explored (less than min_unknown_m2
+// of unknown space left) or its point lies in the inflation, and every replan_period_s while
+// driving, when another point beats the goal's own score by switch_margin. The goal is not dropped as soon as its own cell is seen: the laser's
 // edge recedes in front of the robot, and choosing afresh every time it does made the robot
 // swing between points 3.5 m away in different directions (L98 -10 to -20 %, revisits about
 // halved; docs/semantic_tuning.md, fourth pass).
 //
 // End: as improved_rrt (fewer than end_min_frontier_cells reachable frontier cells in
 // end_checks consecutive checks, each end_check_period_s; cells the robot came within
-// observed_radius_m of are ignored), or no point to assign for idle_end_s.
+// observed_radius_m of are ignored), or no point to assign for idle_end_s and no sliver left
+// in the current room that the robot has not come close to (see decide()).
 //
 // Without a semantic map (ExplorationInput::semantic null) no point is in a room: sampling is
 // uniform and every point scores -A, i.e. the plain RRT score.
@@ -57,7 +59,9 @@ struct SemanticExplorerOptions {
   double room_reward = 3.0;            ///< A: added inside the current room, subtracted outside
   double gain_half_side_m = 1.0;       ///< half-side of G's square [m]
   double min_unknown_m2 = 1.0;         ///< points with less unknown area in the square are
-                                       ///< not goals (slivers along walls, furniture faces)
+                                       ///< goals only when nothing else was found for
+                                       ///< idle_end_s (slivers along walls, furniture faces,
+                                       ///< far room corners)
   bool geodesic_cost = false;          ///< C = path length through the costmap, not Euclidean
   double eta_m = 1.0;                  ///< tree step [m]
   double iterations_per_s = 100.0;     ///< tree iterations per simulated second
@@ -130,6 +134,7 @@ class SemanticExplorer final : public ExplorationStrategy {
   double last_end_check_s_ = -1e9;
   int failed_end_checks_ = 0;
   double idle_since_s_ = -1.0;
+  bool chasing_slivers_ = false;  ///< the goal is a sliver chosen after idle_end_s of idling
   double last_eval_s_ = -1e9;
   int room_ = 0;
   double room_since_s_ = 0.0;
