@@ -103,6 +103,34 @@ TEST(ImprovedRrtEndTest, EndsWhenOnlyPocketsAreLeftNotWhileADoorwayLeadsOn) {
   expectEndsOnlyWithThePocketRule<ImprovedRrt, ImprovedRrtOptions>();
 }
 
+// A corridor 1 m wide along x, known from x = 2 m to its closed east end at 10 m; its open west
+// end (unknown beyond x = 2 m) lies on the edge of the known cells' box. improved_rrt samples a
+// box padded by Cartographer's 5 cells, so its edges reach past that edge and the robot, 7 m
+// away, is sent to the open end. With the unpadded box no sample lay beyond it and no edge
+// ever reached the unknown side: the robot waited, and on a map of rooms off a straight
+// corridor it stopped at 70 %.
+TEST(ImprovedRrtTest, FindsTheOpenEndOfACorridorOnTheEdgeOfTheKnownBox) {
+  OccupancyGrid grid(GridGeometry({0.0, 0.0}, 0.05, 220, 60));
+  fill(grid, 0, 0, 220, 60, CellState::kUnknown);
+  fill(grid, 40, 19, 201, 41, CellState::kOccupied);
+  fill(grid, 40, 20, 200, 40, CellState::kFree);
+  Costmap costmap;
+  costmap.update(grid);
+  ImprovedRrt strategy(1);
+  Decision last;
+  for (double t = 0.0; t <= 60.0; t += 0.25) {
+    last = strategy.decide(ExplorationInput{grid, costmap, Pose2(9.0, 1.5, 0.0), t});
+  }
+  ASSERT_EQ(last.status, Decision::Status::kGoal);
+  EXPECT_LT(last.goal_m.x(), 2.5) << "goal (" << last.goal_m.x() << ", " << last.goal_m.y() << ")";
+  Vec2 box_min, box_max;
+  knownCellsBox(grid, Vec2(9.0, 1.5), kCartographerPaddingCells, box_min, box_max);
+  EXPECT_NEAR(box_min.x(), 2.0 - 0.25, 1e-9);
+  EXPECT_NEAR(box_max.x(), 10.05 + 0.25, 1e-9);
+  knownCellsBox(grid, Vec2(9.0, 1.5), 0, box_min, box_max);
+  EXPECT_NEAR(box_min.x(), 2.0, 1e-9);
+}
+
 // The previous goal is appended to the original's point list on every iteration while it stays
 // unknown; we count those copies on its entry instead of storing them.
 TEST(ImprovedRrtTest, PreviousGoalCopiesAreCountedNotStored) {

@@ -196,9 +196,10 @@ std::size_t countReachableFrontierCells(const OccupancyGrid& grid, const Costmap
   return found.size();
 }
 
-void knownCellsBox(const OccupancyGrid& grid, const Vec2& robot, Vec2& min_m, Vec2& max_m) {
+void knownCellsBox(const OccupancyGrid& grid, const Vec2& robot, int padding_cells, Vec2& min_m, Vec2& max_m) {
   const GridGeometry& g = grid.geometry();
-  const cv::Rect known = g.cellCount() == 0 ? cv::Rect() : maps::knownBounds(maps::stateView(grid), 0);
+  const cv::Rect known =
+      g.cellCount() == 0 ? cv::Rect() : maps::knownBounds(maps::stateView(grid), padding_cells);
   if (known.empty()) {
     min_m = max_m = robot;
     return;
@@ -262,7 +263,7 @@ void markUnknownPockets(std::vector<std::uint8_t>& exhausted, const OccupancyGri
   // outside the outer walls (with min_opening_m > 0: unless the component reaches the box's
   // border through an opening at least that wide, as a corridor leading on would).
   Vec2 box_min, box_max;
-  knownCellsBox(grid, g.centerOf(cells.front()), box_min, box_max);
+  knownCellsBox(grid, g.centerOf(cells.front()), 0, box_min, box_max);
   const int x0 = std::max(0, static_cast<int>(std::floor((box_min.x() - g.origin_m().x()) / res)) - 1);
   const int y0 = std::max(0, static_cast<int>(std::floor((box_min.y() - g.origin_m().y()) / res)) - 1);
   const int x1 = std::min(g.width() - 1, static_cast<int>(std::ceil((box_max.x() - g.origin_m().x()) / res)));

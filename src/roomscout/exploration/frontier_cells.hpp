@@ -37,9 +37,16 @@ std::size_t countReachableFrontierCells(const OccupancyGrid& grid, const Costmap
                                         const std::vector<std::uint8_t>* exhausted,
                                         const Vec2& robot_m, std::size_t limit);
 
-/// Bounding box [m] of the known (free or occupied) cells; the point `fallback_m` when nothing
-/// is known. The box RRT detectors sample from.
-void knownCellsBox(const OccupancyGrid& grid, const Vec2& fallback_m, Vec2& min_m, Vec2& max_m);
+/// Bounding box [m] of the known (free or occupied) cells grown by `padding_cells` on each
+/// side (clipped to the grid); the point `fallback_m` when nothing is known. The box RRT
+/// detectors sample from. A frontier on the edge of the unpadded box (the open end of a
+/// corridor that runs along an axis) has its unknown side outside it, where no sample and so
+/// no edge ever goes.
+/// Cartographer pads the map it publishes (its submap painter's kPaddingPixel): the map
+/// SMMR-Explore's rrt node samples over.
+inline constexpr int kCartographerPaddingCells = 5;
+void knownCellsBox(const OccupancyGrid& grid, const Vec2& fallback_m, int padding_cells, Vec2& min_m,
+                   Vec2& max_m);
 
 /// Flags (sets to 1) the cells of `mask` (one byte per cell of `geometry`, resized if needed)
 /// whose centres lie within `radius_m` of `p_m`.

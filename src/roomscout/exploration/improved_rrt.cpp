@@ -308,7 +308,7 @@ Decision ImprovedRrt::decide(const ExplorationInput& input) {
   markDisc(visited_, input.grid.geometry(), robot, options_.observed_radius_m);
   if (n > 0) {
     Vec2 box_min, box_max;
-    knownCellsBox(input.grid, robot, box_min, box_max);
+    knownCellsBox(input.grid, robot, kCartographerPaddingCells, box_min, box_max);
     const RrtTree::Sampler sampler = uniformBoxSampler(box_min, box_max);
     eraseFrontiers([&](const Point& f) { return stale(input, f); });
     for (long k = 0; k < n; ++k) {

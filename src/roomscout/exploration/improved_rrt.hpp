@@ -5,7 +5,8 @@
 // robot.
 //
 // One tree rooted at the start (eta 1 m, single_rrt_node.launch) samples uniformly over the
-// box of the current map (here: the bounding box of the known cells), 100 iterations per
+// box of the current map (here: the bounding box of the known cells grown by 5 cells, as
+// Cartographer pads the map it publishes; see knownCellsBox), 100 iterations per
 // second (rate 100). Each iteration:
 // - every 100 iterations, the end test: the reachable frontier cells (see
 //   reachableFrontierCells, L1 margin 4 cells) are counted; fewer than 2 in 5 consecutive

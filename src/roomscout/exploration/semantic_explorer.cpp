@@ -231,7 +231,10 @@ void SemanticExplorer::collectCandidates(const ExplorationInput& input) {
 void SemanticExplorer::grow(const ExplorationInput& input, long iterations) {
   const GridGeometry& g = input.grid.geometry();
   Vec2 box_min, box_max;
-  knownCellsBox(input.grid, input.robot.position(), box_min, box_max);
+  // Unpadded: with the 5 cells improved_rrt pads the box by, L98 rose by 4, 12 and 1 % in
+  // the three built-in worlds (10 seeds). P_sem reaches the current room's frontier on the
+  // box's edge anyway.
+  knownCellsBox(input.grid, input.robot.position(), 0, box_min, box_max);
   const RrtTree::Sampler uniform = uniformBoxSampler(box_min, box_max);
   const double p_sem = semanticSampleProbability(options_.k, time_in_room_s_);
   if (point_cells_.size() != g.cellCount()) point_cells_.assign(g.cellCount(), 0);
