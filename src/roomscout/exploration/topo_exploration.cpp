@@ -22,6 +22,8 @@ void TopoExplorationOptions::validate() const {
   }
   if (cluster_min_samples < 1) throw OptionError("topo.cluster_min_samples must be >= 1");
   if (min_cluster_points < 1) throw OptionError("topo.min_cluster_points must be >= 1");
+  if (refresh_min_cluster_points < 1) throw OptionError("topo.refresh_min_cluster_points must be >= 1");
+  if (!non_negative(refresh_open_unknown_m2)) throw OptionError("topo.refresh_open_unknown_m2 must be >= 0");
   if (!non_negative(frontier_point_offset_m) || !non_negative(goal_offset_m)) {
     throw OptionError("topo: frontier_point_offset_m and goal_offset_m must be >= 0");
   }
@@ -66,6 +68,11 @@ std::vector<ParameterRef> TopoExplorationOptions::parameters() {
       {"final_refresh", &final_refresh,
        "before ending, the frontier clusters of the whole map become directions of their nearest "
        "vertex"},
+      {"refresh_min_cluster_points", &refresh_min_cluster_points,
+       "when the final refresh finds no cluster of min_cluster_points, clusters this large that "
+       "open onto refresh_open_unknown_m2 of unknown space count"},
+      {"refresh_open_unknown_m2", &refresh_open_unknown_m2,
+       "unknown space a small cluster of the final refresh must open onto [m^2]"},
       {"observed_radius_m", &observed_radius_m,
        "the final refresh ignores frontiers this close to the robot's path [m]"},
       {"replan_period_s", &replan_period_s, "seconds between decisions while driving"},
@@ -249,6 +256,35 @@ TopoExploration::Direction directionTo(const Vec2& from_m, const FrontierCluster
   return d;
 }
 
+/// Whether the unknown space next to `p_m` (the unknown cells within 2 cells of it and those
+/// 4-connected to them) holds at least `cap` cells: a way into unseen space rather than a
+/// pocket behind furniture. `seen` is scratch of one byte per cell, all 0, and left all 0.
+bool opensOntoUnknown(const OccupancyGrid& grid, const Vec2& p_m, std::size_t cap, std::vector<std::uint8_t>& seen) {
+  const GridGeometry& g = grid.geometry();
+  const Cell c = g.cellOf(p_m);
+  std::vector<std::size_t> queue;
+  auto push = [&](const Cell& q) {
+    if (!g.contains(q)) return;
+    const std::size_t j = g.index(q);
+    if (seen[j] || !grid.isUnknown(j)) return;
+    seen[j] = 1;
+    queue.push_back(j);
+  };
+  for (int dy = -2; dy <= 2; ++dy) {
+    for (int dx = -2; dx <= 2; ++dx) push(Cell{c.x + dx, c.y + dy});
+  }
+  const int w = g.width();
+  for (std::size_t head = 0; head < queue.size() && queue.size() < cap; ++head) {
+    const int x = static_cast<int>(queue[head] % w), y = static_cast<int>(queue[head] / w);
+    push(Cell{x + 1, y});
+    push(Cell{x - 1, y});
+    push(Cell{x, y + 1});
+    push(Cell{x, y - 1});
+  }
+  for (const std::size_t j : queue) seen[j] = 0;
+  return queue.size() >= cap;
+}
+
 }  // namespace
 
 std::vector<TopoExploration::Direction> TopoExploration::localDirections(
@@ -404,7 +440,19 @@ bool TopoExploration::refreshAll(const OccupancyGrid& grid) {
   ignore.resize(g.cellCount(), 0);
   for (const Vec2& a : tried_anchors_) markDisc(ignore, g, a, options_.stale_radius_m);
   bool any = false;
-  for (const FrontierCluster& c : frontierClusters(grid, g.bounds(), options_, &ignore)) {
+  std::vector<FrontierCluster> clusters = frontierClusters(grid, g.bounds(), options_, &ignore);
+  if (clusters.empty() && options_.refresh_min_cluster_points < options_.min_cluster_points) {
+    // Nothing of the original's size left: smaller clusters that open onto unseen space (a door
+    // seen at a slant from the middle of a room) rather than onto a pocket.
+    TopoExplorationOptions small = options_;
+    small.min_cluster_points = options_.refresh_min_cluster_points;
+    clusters = frontierClusters(grid, g.bounds(), small, &ignore);
+    const double cell_m2 = g.resolution_m() * g.resolution_m();
+    const auto cap = static_cast<std::size_t>(std::max(1.0, std::ceil(options_.refresh_open_unknown_m2 / cell_m2)));
+    std::vector<std::uint8_t> seen(g.cellCount(), 0);
+    std::erase_if(clusters, [&](const FrontierCluster& c) { return !opensOntoUnknown(grid, c.anchor_m, cap, seen); });
+  }
+  for (const FrontierCluster& c : clusters) {
     auto nearest =
         std::min_element(vertices_.begin(), vertices_.end(), [&](const Vertex& a, const Vertex& b) {
           return (a.position_m - c.anchor_m).squaredNorm() <

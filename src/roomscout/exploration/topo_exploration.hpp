@@ -64,7 +64,11 @@
 //   laser never marks a few cells there, see markDisc) or within stale_radius_m of the frontier
 //   of a goal that was reached, or that failed when the goal was that frontier (a goal d + 6 m
 //   out that fails, often outside the building, says nothing of its frontier), are left out,
-//   so the refresh cannot repeat itself;
+//   so the refresh cannot repeat itself. When no cluster of min_cluster_points is left, smaller
+//   ones (refresh_min_cluster_points) count if the unknown space beside them holds
+//   refresh_open_unknown_m2 (a door seen at a slant from the middle of the start room: the
+//   cluster of 100 points, about 1.7 m of frontier, made the robot end at once, at 20 and 50 %
+//   of two HouseExpo plans; pockets behind furniture are smaller and stay out);
 //   exploration ends when it finds nothing. The goal of such a direction is the frontier itself
 //   (the cluster member nearest its mean), exempt from the near-vertex rule: pockets behind
 //   furniture have their goal d + 6 m out in explored space, where the rule gives them up.
@@ -104,6 +108,11 @@ struct TopoExplorationOptions {
   double goal_snap_radius_m = 1.0;       ///< the goal moves at most this far to a safe cell [m]
   bool final_refresh = true;             ///< before ending, the map's frontier clusters become
                                          ///< directions again (see header)
+  int refresh_min_cluster_points = 30;   ///< when the refresh finds no cluster of
+                                         ///< min_cluster_points: smaller clusters down to this
+                                         ///< many points (about 0.5 m of frontier) count ...
+  double refresh_open_unknown_m2 = 4.0;  ///< ... when the unknown space they open onto
+                                         ///< (4-connected) holds this much [m^2]
   double observed_radius_m = 0.75;       ///< the final refresh ignores frontiers this close to
                                          ///< where the robot has been [m]
   double replan_period_s = 0.5;          ///< decide() period while driving [s]
