@@ -6,6 +6,7 @@
 
 #include <memory>
 
+#include "roomscout/core/errors.hpp"
 #include "roomscout/exploration/frontier_cells.hpp"
 #include "roomscout/exploration/improved_rrt.hpp"
 #include "roomscout/exploration/rrt_exploration.hpp"
@@ -129,6 +130,73 @@ TEST(ImprovedRrtTest, FindsTheOpenEndOfACorridorOnTheEdgeOfTheKnownBox) {
   EXPECT_NEAR(box_max.x(), 10.05 + 0.25, 1e-9);
   knownCellsBox(grid, Vec2(9.0, 1.5), 0, box_min, box_max);
   EXPECT_NEAR(box_min.x(), 2.0, 1e-9);
+}
+
+// The pocket test's room without the cabinet, its two right-hand corners cut off by diagonals
+// the laser never reached, open to the unknown outside: the last cells the end test counts. When
+// the detector holds no frontier point (here it grows no tree at all, as when every edge toward
+// those cells is rejected), improved_rrt waits look_after_idle_s and then drives to look at the
+// nearest of them; the original waits for good (10 HouseExpo plans ran to the time limit).
+TEST(ImprovedRrtTest, AfterIdlingDrivesToLookAtTheCellsTheEndTestStillCounts) {
+  OccupancyGrid grid = roomWithCrackedCabinet(false);
+  fill(grid, 20, 20, 40, 40, CellState::kFree);  // no cabinet
+  for (int y = 0; y < 70; ++y) {
+    for (int x = 60; x < 90; ++x) {
+      if ((x - 60) + (y - 50) >= 4 || (x - 60) + (14 - y) >= 4) {
+        grid.setState(grid.geometry().index(Cell{x, y}), CellState::kUnknown);
+      }
+    }
+  }
+  Costmap costmap;
+  costmap.update(grid);
+  const Vec2 start(2.0, 2.0);  // cell (40, 40): 1.3 m from the top-right cut, 1.9 m from the other
+  const std::vector<Cell> cells = reachableFrontierCells(grid, costmap, 4, nullptr, &start);
+  ASSERT_GE(cells.size(), 2u);
+  auto nearCell = [&](const Vec2& p) {
+    for (const Cell& c : cells) {
+      if ((grid.geometry().centerOf(c) - p).norm() < 0.15) return true;
+    }
+    return false;
+  };
+  ImprovedRrtOptions starved;
+  starved.iterations_per_s = 1e-6;
+  for (const double look_after_s : {30.0, 0.0}) {
+    ImprovedRrtOptions options = starved;
+    options.look_after_idle_s = look_after_s;
+    ImprovedRrt strategy(1, options);
+    Pose2 robot(start.x(), start.y(), 0.0);
+    for (double t = 0.0; t < 29.9; t += 0.25) {
+      const Decision d = strategy.decide(ExplorationInput{grid, costmap, robot, t});
+      ASSERT_EQ(d.status, Decision::Status::kGoal);
+      EXPECT_LT((d.goal_m - start).norm(), 0.1) << "waits where it is, t " << t;
+    }
+    const Decision look = strategy.decide(ExplorationInput{grid, costmap, robot, 30.0});
+    ASSERT_EQ(look.status, Decision::Status::kGoal);
+    if (look_after_s == 0.0) {
+      EXPECT_LT((look.goal_m - start).norm(), 0.1) << "the original keeps waiting";
+      continue;
+    }
+    ASSERT_TRUE(nearCell(look.goal_m)) << "goal (" << look.goal_m.x() << ", " << look.goal_m.y() << ")";
+    EXPECT_EQ(strategy.decide(ExplorationInput{grid, costmap, robot, 30.25}).goal_m, look.goal_m);
+    // There: the cells within observed_radius_m count as looked at; the next goal is at the
+    // other corner.
+    robot = Pose2(look.goal_m.x(), look.goal_m.y(), 0.0);
+    strategy.onGoalReached(look.goal_m);
+    const Decision next = strategy.decide(ExplorationInput{grid, costmap, robot, 31.0});
+    ASSERT_EQ(next.status, Decision::Status::kGoal);
+    EXPECT_TRUE(nearCell(next.goal_m)) << "goal (" << next.goal_m.x() << ", " << next.goal_m.y() << ")";
+    EXPECT_GT(look.goal_m.y(), 2.0);
+    EXPECT_LT(next.goal_m.y(), 1.0);
+    // Both corners looked at: nothing is left, the robot waits (the end test passes now).
+    robot = Pose2(next.goal_m.x(), next.goal_m.y(), 0.0);
+    strategy.onGoalReached(next.goal_m);
+    const Decision after = strategy.decide(ExplorationInput{grid, costmap, robot, 32.0});
+    ASSERT_EQ(after.status, Decision::Status::kGoal);
+    EXPECT_LT((after.goal_m - next.goal_m).norm(), 0.1);
+  }
+  ImprovedRrtOptions negative;
+  negative.look_after_idle_s = -1.0;
+  EXPECT_THROW(negative.validate(), OptionError);
 }
 
 // The previous goal is appended to the original's point list on every iteration while it stays

@@ -33,6 +33,9 @@ void ImprovedRrtOptions::validate() const {
     throw OptionError("improved_rrt: min_unknown_area_m2 and min_opening_m must be >= 0");
   }
   if (!positive(pocket_check_period_s)) throw OptionError("improved_rrt.pocket_check_period_s must be > 0");
+  if (!(look_after_idle_s >= 0.0 && std::isfinite(look_after_idle_s))) {
+    throw OptionError("improved_rrt.look_after_idle_s must be finite and >= 0");
+  }
 }
 
 std::vector<ParameterRef> ImprovedRrtOptions::parameters() {
@@ -58,6 +61,8 @@ std::vector<ParameterRef> ImprovedRrtOptions::parameters() {
       {"min_unknown_area_m2", &min_unknown_area_m2, "end test: frontier cells with less unknown, non-lethal area behind them (inside the known box) are ignored [m^2]"},
       {"min_opening_m", &min_opening_m, "end test: unknown space leaving the known box through an opening this wide is no pocket [m] (0: off)"},
       {"pocket_check_period_s", &pocket_check_period_s, "period of the end test's pocket search [s]"},
+      {"look_after_idle_s", &look_after_idle_s,
+       "no frontier point for this long: drive to look at the end test's remaining cells [s]; 0 = never"},
   };
 }
 
@@ -158,6 +163,12 @@ bool ImprovedRrt::blacklisted(const Vec2& p) const {
 void ImprovedRrt::onGoalReached(const Vec2& goal_m) { onGoalFailed(goal_m); }
 
 void ImprovedRrt::onGoalFailed(const Vec2& goal_m) {
+  if (looking_ && (goal_m - look_goal_m_).norm() < 1e-9) {
+    // Reached, or given up as unreachable: either way the cell counts as looked at (marked in
+    // the next decide(), which has the grid).
+    look_ended_ = true;
+    looking_ = false;
+  }
   // Reached or failed, the goal is not sent again: what is still unknown around a reached goal
   // cannot be seen from it (behind a wall), and a failed one cannot be reached.
   if (goal_active_ && (goal_m - previous_goal_.p).norm() < 1e-9) {
@@ -306,6 +317,8 @@ Decision ImprovedRrt::decide(const ExplorationInput& input) {
     done_until_s_ += static_cast<double>(n) / options_.iterations_per_s;
   }
   markDisc(visited_, input.grid.geometry(), robot, options_.observed_radius_m);
+  if (look_ended_) markDisc(visited_, input.grid.geometry(), look_cell_m_, options_.observed_radius_m);
+  look_ended_ = false;
   if (n > 0) {
     Vec2 box_min, box_max;
     knownCellsBox(input.grid, robot, kCartographerPaddingCells, box_min, box_max);
@@ -320,9 +333,39 @@ Decision ImprovedRrt::decide(const ExplorationInput& input) {
   if (goal_active_ && !input.costmap.isLethal(g.cellOf(previous_goal_.p))) return Decision::goal(previous_goal_.p);
   // A goal that became lethal is given up like a failed one.
   if (goal_active_) onGoalFailed(previous_goal_.p);
+  if (const auto look = lookGoal(input)) return Decision::goal(*look);
   // No goal to drive to: wait where we are until the next selection.
   if (const auto wait = nearestGoalCell(input.grid, input.costmap, robot, 3.0)) return Decision::goal(*wait);
   return Decision::done();
+}
+
+std::optional<Vec2> ImprovedRrt::lookGoal(const ExplorationInput& input) {
+  if (!frontiers_.empty() || options_.look_after_idle_s <= 0.0) {
+    idle_since_s_ = -1.0;
+    looking_ = false;
+    return std::nullopt;
+  }
+  if (idle_since_s_ < 0.0) idle_since_s_ = input.time_s;
+  if (input.time_s - idle_since_s_ < options_.look_after_idle_s - 1e-9) return std::nullopt;
+  const GridGeometry& g = input.grid.geometry();
+  if (looking_ && visited_[g.index(g.cellOf(look_cell_m_))] == 0) return look_goal_m_;
+  looking_ = false;
+  const Vec2 robot = input.robot.position();
+  const std::vector<Cell> cells =
+      reachableFrontierCells(input.grid, input.costmap, options_.end_obstacle_l1_cells, &visited_, &robot);
+  if (cells.empty()) return std::nullopt;
+  const Cell nearest = *std::min_element(cells.begin(), cells.end(), [&](const Cell& a, const Cell& b) {
+    return (g.centerOf(a) - robot).squaredNorm() < (g.centerOf(b) - robot).squaredNorm();
+  });
+  look_cell_m_ = g.centerOf(nearest);
+  const std::optional<Vec2> goal = nearestGoalCell(input.grid, input.costmap, look_cell_m_, 2.0 * g.resolution_m());
+  if (!goal) {
+    markDisc(visited_, g, look_cell_m_, options_.observed_radius_m);
+    return std::nullopt;
+  }
+  looking_ = true;
+  look_goal_m_ = *goal;
+  return look_goal_m_;
 }
 
 }  // namespace roomscout
