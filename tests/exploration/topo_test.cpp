@@ -352,20 +352,10 @@ TEST(TopoExploration, EndsWhenTheOnlyFrontierLiesBehindAGapTooNarrowToPass) {
 /// at once, as on two HouseExpo plans (20 and 50 %). The final refresh takes such a cluster
 /// when it opens onto unknown space.
 TEST(TopoExploration, GoesThroughADoorSeenAtASlantFromTheStartRoom) {
-  sim::World world;
-  world.name = "corner_door";
-  world.source = "test:corner_door";
-  const double t = 0.2;
-  world.walls = {{{0, 0}, {4, 0}, t, 0, 2.5},   {{4, 0}, {4, 8}, t, 0, 2.5},   {{4, 8}, {0, 8}, t, 0, 2.5},
-                 {{0, 8}, {0, 0}, t, 0, 2.5},   {{0, 4}, {3.1, 4}, t, 0, 2.5}};
-  world.doors = {{{3.5, 4}, 0.8}};
-  world.rooms = {{1, "south", {{0, 0}, {4, 0}, {4, 4}, {0, 4}}}, {2, "north", {{0, 4}, {4, 4}, {4, 8}, {0, 8}}}};
-  world.start = {1.5, 1.5, 0.0};
-  world.start_given = true;
   sim::EpisodeConfig config;
   config.resolve();
   config.episode.max_time_s = 600.0;
-  const sim::WorldModel model(world, config.world);
+  const sim::WorldModel model(sim::testing::cornerDoorRooms(), config.world);
   TopoExplorationOptions original_sizes;
   original_sizes.refresh_min_cluster_points = original_sizes.min_cluster_points;
   TopoExploration before(original_sizes);

@@ -34,4 +34,21 @@ inline World twoRooms() {
   return w;
 }
 
+/// Two 4 x 4 m rooms, [0,4]x[0,4] (south) and [0,4]x[4,8] (north), joined by a 0.8 m door in
+/// the corner of the wall between them (x 3.1 to 3.9); the robot starts at (1.5, 1.5), from
+/// where the door is seen at a slant.
+inline World cornerDoorRooms() {
+  World w;
+  w.name = "corner_door";
+  w.source = "test:corner_door";
+  const double t = 0.2;
+  w.walls = {{{0, 0}, {4, 0}, t, 0, 2.5}, {{4, 0}, {4, 8}, t, 0, 2.5}, {{4, 8}, {0, 8}, t, 0, 2.5},
+             {{0, 8}, {0, 0}, t, 0, 2.5}, {{0, 4}, {3.1, 4}, t, 0, 2.5}};
+  w.doors = {{{3.5, 4}, 0.8}};
+  w.rooms = {{1, "south", {{0, 0}, {4, 0}, {4, 4}, {0, 4}}}, {2, "north", {{0, 4}, {4, 4}, {4, 8}, {0, 8}}}};
+  w.start = {1.5, 1.5, 0.0};
+  w.start_given = true;
+  return w;
+}
+
 }  // namespace roomscout::sim::testing
