@@ -137,6 +137,59 @@ TEST(SemanticExplorerTest, KeepsItsGoalUntilTheGoalsSquareIsExplored) {
   EXPECT_TRUE(w.grid.isUnknown(g.index(g.cellOf(next.goal_m))));
 }
 
+/// Two known rooms (10 x 5 m, x < 5 m is room 1) and, in room 2, a 1.5 x 1.5 m block whose
+/// north, east and south faces were seen (occupied) but whose west face and interior never were:
+/// the unknown inside of a cupboard whose front the laser only grazed. Nothing else is unknown.
+struct PocketGrid {
+  OccupancyGrid grid{GridGeometry({0.0, 0.0}, 0.05, 200, 100)};
+  Costmap costmap;
+  SemanticMap semantic;
+  static constexpr int kX0 = 140, kX1 = 170, kY0 = 40, kY1 = 70;  // the block [cells]
+  PocketGrid() {
+    const GridGeometry& g = grid.geometry();
+    cv::Mat labels(g.height(), g.width(), CV_32S, cv::Scalar(0));
+    for (int y = 0; y < g.height(); ++y) {
+      for (int x = 0; x < g.width(); ++x) {
+        const bool block = x >= kX0 && x <= kX1 && y >= kY0 && y <= kY1;
+        const bool face = block && (x == kX1 || y == kY0 || y == kY1);
+        const CellState s = face ? CellState::kOccupied : block ? CellState::kUnknown : CellState::kFree;
+        grid.setState(g.index(Cell{x, y}), s);
+        if (s == CellState::kFree) labels.at<int>(y, x) = x < 100 ? 1 : 2;
+      }
+    }
+    costmap.update(grid);
+    semantic.update(g, labels, cv::Mat());
+  }
+  bool nearBlock(const Vec2& p) const {
+    const Vec2 lo = grid.geometry().centerOf(Cell{kX0, kY0}), hi = grid.geometry().centerOf(Cell{kX1, kY1});
+    return p.x() > lo.x() - 1.0 && p.x() < hi.x() + 1.0 && p.y() > lo.y() - 1.0 && p.y() < hi.y() + 1.0;
+  }
+};
+
+TEST(SemanticExplorerTest, DoesNotDriveToAPocketOfUnknownSpaceInAnotherRoom) {
+  // Returns whether any goal of 20 s of decisions lies at the block, and the last decision.
+  auto run = [](double pocket_area_m2, Decision& last) {
+    PocketGrid w;
+    SemanticExplorerOptions o;
+    o.pocket_area_m2 = pocket_area_m2;
+    SemanticExplorer s(11, o);
+    bool at_block = false;
+    for (double t = 0.0; t <= 20.0; t += 1.0) {
+      last = s.decide({w.grid, w.costmap, Pose2{2.0, 2.5, 0.0}, t, &w.semantic});
+      if (last.status == Decision::Status::kGoal && w.nearBlock(last.goal_m)) at_block = true;
+    }
+    bool tree_found_it = false;
+    for (const auto& f : s.frontierPoints()) tree_found_it = tree_found_it || w.nearBlock(f.p);
+    EXPECT_TRUE(tree_found_it) << "pocket_area_m2 " << pocket_area_m2;
+    return at_block;
+  };
+  Decision last;
+  // About 1.1 m^2 of the block's inside is unknown and clear of the inflation: a pocket.
+  EXPECT_FALSE(run(SemanticExplorerOptions{}.pocket_area_m2, last));
+  // Without the test, its open face is the best (the only) frontier point.
+  EXPECT_TRUE(run(0.0, last));
+}
+
 TEST(SemanticExplorerTest, AblationsAreRegisteredWithTheirDefaults) {
   auto sampling = createStrategy("semantic_sampling_only", 1);
   auto scoring = createStrategy("semantic_score_only", 1);

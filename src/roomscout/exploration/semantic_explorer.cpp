@@ -21,6 +21,7 @@ void SemanticExplorerOptions::validate() const {
   if (!finiteAtLeast(room_reward, 0.0)) throw OptionError("semantic.room_reward must be >= 0");
   if (!positive(gain_half_side_m)) throw OptionError("semantic.gain_half_side_m must be > 0");
   if (!finiteAtLeast(min_unknown_m2, 0.0)) throw OptionError("semantic.min_unknown_m2 must be >= 0");
+  if (!finiteAtLeast(pocket_area_m2, 0.0)) throw OptionError("semantic.pocket_area_m2 must be >= 0");
   if (!positive(eta_m)) throw OptionError("semantic.eta_m must be > 0");
   if (!positive(iterations_per_s)) throw OptionError("semantic.iterations_per_s must be > 0");
   if (!finiteAtLeast(replan_period_s, 0.0)) throw OptionError("semantic.replan_period_s must be >= 0");
@@ -44,6 +45,7 @@ std::vector<ParameterRef> SemanticExplorerOptions::parameters() {
       {"room_reward", &room_reward, "A: added to points in the current room, subtracted elsewhere"},
       {"gain_half_side_m", &gain_half_side_m, "half-side of the square G is measured in [m]"},
       {"min_unknown_m2", &min_unknown_m2, "points with less unknown area in G's square are not goals [m^2]"},
+      {"pocket_area_m2", &pocket_area_m2, "points opening onto less unknown, non-lethal area count as slivers; 0 = off [m^2]"},
       {"geodesic_cost", &geodesic_cost, "C is the path length through the costmap instead of the Euclidean distance"},
       {"eta_m", &eta_m, "tree steering step [m]"},
       {"iterations_per_s", &iterations_per_s, "tree iterations per simulated second"},
@@ -66,6 +68,10 @@ double semanticSampleProbability(double k, double t_s) {
 }
 
 namespace {
+
+/// Unknown space that reaches the known map's border through an opening this wide is no
+/// pocket, whatever its area: it may go on beyond the map (the baselines' min_opening_m).
+constexpr double kPocketOpening_m = 0.4;
 
 /// A uniform double in [0, 1) from the generator (our own mapping: the standard distributions
 /// differ between standard libraries, and runs must not).
@@ -385,10 +391,18 @@ Decision SemanticExplorer::decide(const ExplorationInput& input) {
     double best_sliver_score = -std::numeric_limits<double>::infinity();
     double goal_score = -std::numeric_limits<double>::infinity();
     std::size_t best = points_.size(), best_sliver = points_.size();
+    if (options_.pocket_area_m2 > 0.0) {
+      std::vector<Cell> cells;
+      cells.reserve(points_.size());
+      for (const FrontierPoint& f : points_) cells.push_back(g.cellOf(f.p));
+      pockets_.assign(g.cellCount(), 0);
+      markUnknownPockets(pockets_, input.grid, input.costmap, cells, options_.pocket_area_m2, kPocketOpening_m);
+    }
     for (std::size_t i = 0; i < points_.size(); ++i) {
       if (!std::isfinite(c[i])) continue;  // no path through the costmap
       const SquareAreas a = squareAreas(input.grid, points_[i].p, options_.gain_half_side_m);
-      const bool sliver = a.unknown_m2 < options_.min_unknown_m2;
+      const bool sliver = a.unknown_m2 < options_.min_unknown_m2 ||
+                          (options_.pocket_area_m2 > 0.0 && pockets_[g.index(g.cellOf(points_[i].p))]);
       if (sliver && (!slivers_wanted || visited_[g.index(g.cellOf(points_[i].p))])) continue;
       const bool inside = room_ != 0 && roomOf(input, points_[i].anchor) == room_;
       if (sliver && !inside) continue;
