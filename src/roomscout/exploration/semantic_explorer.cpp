@@ -400,10 +400,11 @@ Decision SemanticExplorer::decide(const ExplorationInput& input) {
     }
     for (std::size_t i = 0; i < points_.size(); ++i) {
       if (!std::isfinite(c[i])) continue;  // no path through the costmap
+      const std::size_t cell = g.index(g.cellOf(points_[i].p));
       const SquareAreas a = squareAreas(input.grid, points_[i].p, options_.gain_half_side_m);
-      const bool sliver = a.unknown_m2 < options_.min_unknown_m2 ||
-                          (options_.pocket_area_m2 > 0.0 && pockets_[g.index(g.cellOf(points_[i].p))]);
-      if (sliver && (!slivers_wanted || visited_[g.index(g.cellOf(points_[i].p))])) continue;
+      const bool sliver =
+          a.unknown_m2 < options_.min_unknown_m2 || (options_.pocket_area_m2 > 0.0 && pockets_[cell]);
+      if (sliver && (!slivers_wanted || visited_[cell])) continue;
       const bool inside = room_ != 0 && roomOf(input, points_[i].anchor) == room_;
       if (sliver && !inside) continue;
       const double s = score(a.unknown_m2 - a.occupied_m2, c[i], inside);
