@@ -189,6 +189,56 @@ TEST(SemanticExplorerTest, DoesNotDriveToAPocketOfUnknownSpaceInAnotherRoom) {
   EXPECT_TRUE(goesToTheBlock(0.0));
 }
 
+/// A known 12 x 6 m floor split by a wall at x = 4 m that leaves a 1 m gap at the north end,
+/// with two unknown blocks: A just east of the wall (1.5 m from the robot in a straight line,
+/// about 10 m around the wall) and B in the west room's north-west corner (about 3.5 m away
+/// either way).
+struct WallGrid {
+  OccupancyGrid grid{GridGeometry({0.0, 0.0}, 0.05, 240, 120)};
+  Costmap costmap;
+  WallGrid() {
+    const GridGeometry& g = grid.geometry();
+    for (int y = 0; y < g.height(); ++y) {
+      for (int x = 0; x < g.width(); ++x) {
+        const Vec2 p = g.centerOf(Cell{x, y});
+        CellState s = CellState::kFree;
+        if (p.x() > 3.95 && p.x() < 4.05 && p.y() < 5.0) s = CellState::kOccupied;
+        if (inA(p) || inB(p)) s = CellState::kUnknown;
+        grid.setState(g.index(Cell{x, y}), s);
+      }
+    }
+    costmap.update(grid);
+  }
+  static bool inA(const Vec2& p) { return p.x() > 4.5 && p.x() < 6.0 && p.y() < 2.0; }
+  static bool inB(const Vec2& p) { return p.x() < 1.2 && p.y() > 3.5; }
+};
+
+TEST(SemanticExplorerTest, CostsAPointByThePathToItNotTheStraightLine) {
+  // The goal after 20 s of tree growth, the robot standing at (3, 1) west of the wall.
+  auto goal = [](bool geodesic) {
+    WallGrid w;
+    SemanticExplorerOptions o;
+    o.geodesic_cost = geodesic;
+    SemanticExplorer s(5, o);
+    const Pose2 robot{3.0, 1.0, 0.0};
+    s.decide({w.grid, w.costmap, robot, 0.0, nullptr});
+    const Decision d = s.decide({w.grid, w.costmap, robot, 20.0, nullptr});
+    EXPECT_EQ(d.status, Decision::Status::kGoal);
+    bool found_a = false, found_b = false;
+    for (const auto& f : s.frontierPoints()) {
+      found_a = found_a || (f.p.x() > 4.0 && f.p.y() < 2.5);
+      found_b = found_b || (f.p.x() < 1.7 && f.p.y() > 3.0);
+    }
+    EXPECT_TRUE(found_a && found_b) << "the tree must have found both blocks";
+    return d.goal_m;
+  };
+  const Vec2 by_path = goal(true);
+  EXPECT_TRUE(by_path.x() < 1.7 && by_path.y() > 3.0) << "goal " << by_path.transpose();
+  // The straight line makes the block behind the wall look nearest.
+  const Vec2 by_line = goal(false);
+  EXPECT_TRUE(by_line.x() > 4.0 && by_line.y() < 2.5) << "goal " << by_line.transpose();
+}
+
 TEST(SemanticExplorerTest, AblationsAreRegisteredWithTheirDefaults) {
   auto sampling = createStrategy("semantic_sampling_only", 1);
   auto scoring = createStrategy("semantic_score_only", 1);

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <queue>
 
 #include "roomscout/core/errors.hpp"
 #include "roomscout/exploration/frontier_cells.hpp"
@@ -57,7 +56,7 @@ std::vector<ParameterRef> SemanticExplorerOptions::parameters() {
       {"end_checks", &end_checks, "consecutive failing end tests that end exploration"},
       {"end_min_frontier_cells", &end_min_frontier_cells, "fewer reachable frontier cells fail the end test"},
       {"observed_radius_m", &observed_radius_m, "end test: frontier cells still unknown this close to the robot are ignored [m]"},
-      {"idle_end_s", &idle_end_s, "exploration ends after this long with no point to assign [s]"},
+      {"idle_end_s", &idle_end_s, "idle this long: slivers, then P_sem from every frontier cell; twice this ends [s]"},
       {"max_iterations_per_call", &max_iterations_per_call, "cap on tree iterations run in one call"},
   };
 }
@@ -72,6 +71,8 @@ namespace {
 /// Unknown space that reaches the known map's border through an opening this wide is no
 /// pocket, whatever its area: it may go on beyond the map (the baselines' min_opening_m).
 constexpr double kPocketOpening_m = 0.4;
+/// P(P_sem) once the robot has idled for idle_end_s, P_sem then being any frontier cell.
+constexpr double kIdleSemanticProbability = 0.5;
 
 /// A uniform double in [0, 1) from the generator (our own mapping: the standard distributions
 /// differ between standard libraries, and runs must not).
@@ -182,14 +183,21 @@ void SemanticExplorer::updateRoom(const ExplorationInput& input) {
 
 void SemanticExplorer::collectCandidates(const ExplorationInput& input) {
   candidates_.clear();
-  if (room_ == 0 || input.semantic == nullptr) return;
-  const SemanticRegion* region = input.semantic->region(room_);
-  if (region == nullptr || region->polygon_m.empty()) return;
   const GridGeometry& g = input.grid.geometry();
-  Vec2 lo = region->polygon_m.front(), hi = lo;
-  for (const Vec2& v : region->polygon_m) {
-    lo = lo.cwiseMin(v);
-    hi = hi.cwiseMax(v);
+  Vec2 lo, hi;
+  if (idle_) {
+    // Nothing to assign: any frontier cell will do (see the header).
+    knownCellsBox(input.grid, input.robot.position(), 0, lo, hi);
+  } else {
+    if (room_ == 0 || input.semantic == nullptr) return;
+    const SemanticRegion* region = input.semantic->region(room_);
+    if (region == nullptr || region->polygon_m.empty()) return;
+    lo = region->polygon_m.front();
+    hi = lo;
+    for (const Vec2& v : region->polygon_m) {
+      lo = lo.cwiseMin(v);
+      hi = hi.cwiseMax(v);
+    }
   }
   const double pad = options_.label_search_m + g.resolution_m();
   const Cell a = g.cellOf(lo - Vec2(pad, pad));
@@ -229,7 +237,7 @@ void SemanticExplorer::collectCandidates(const ExplorationInput& input) {
       }
       if (unknownIn(x, y) * cell_m2 < options_.min_unknown_m2) continue;
       const Vec2 p = g.centerOf(Cell{x, y});
-      if (roomOf(input, p) == room_) candidates_.push_back(p);
+      if (idle_ || roomOf(input, p) == room_) candidates_.push_back(p);
     }
   }
 }
@@ -242,7 +250,7 @@ void SemanticExplorer::grow(const ExplorationInput& input, long iterations) {
   // box's edge anyway.
   knownCellsBox(input.grid, input.robot.position(), 0, box_min, box_max);
   const RrtTree::Sampler uniform = uniformBoxSampler(box_min, box_max);
-  const double p_sem = semanticSampleProbability(options_.k, time_in_room_s_);
+  const double p_sem = idle_ ? kIdleSemanticProbability : semanticSampleProbability(options_.k, time_in_room_s_);
   if (point_cells_.size() != g.cellCount()) point_cells_.assign(g.cellCount(), 0);
   for (long n = 0; n < iterations; ++n) {
     Vec2 sample;
@@ -273,40 +281,71 @@ void SemanticExplorer::grow(const ExplorationInput& input, long iterations) {
   }
 }
 
-std::vector<double> SemanticExplorer::costs(const ExplorationInput& input) const {
+void SemanticExplorer::cost(const ExplorationInput& input, std::vector<Candidate>& candidates) {
   const Vec2 robot = input.robot.position();
-  std::vector<double> out(points_.size());
-  if (!options_.geodesic_cost) {
-    for (std::size_t i = 0; i < points_.size(); ++i) out[i] = (points_[i].p - robot).norm();
-    return out;
-  }
-  // Dijkstra from the robot over non-lethal cells (8-connected), until every point is settled.
+  for (Candidate& c : candidates) c.cost_m = (c.p - robot).norm();
+  if (!options_.geodesic_cost) return;
+  // Dijkstra from the robot over non-lethal cells (8-connected). Every cell whose distance is
+  // at most the queue's smallest is final; a candidate not final yet costs at least that much
+  // (and at least its straight-line distance), which bounds its score. The search stops once
+  // the goal's cost is final and no candidate still open can beat the best final one of its
+  // kind: the choice is that of a search over the whole map (same episodes, 20-30x less time
+  // per decision in the houses). Open candidates keep an infinite cost (they cannot win).
   const GridGeometry& g = input.grid.geometry();
   const int w = g.width(), h = g.height();
-  std::vector<float> dist(g.cellCount(), std::numeric_limits<float>::infinity());
-  std::vector<std::uint8_t> wanted(g.cellCount(), 0);
-  std::size_t remaining = 0;
-  for (const FrontierPoint& f : points_) {
-    const std::size_t i = g.index(g.cellOf(f.p));
-    if (!wanted[i]) ++remaining;
-    wanted[i] = 1;
+  if (dist_.size() != g.cellCount()) {
+    dist_.assign(g.cellCount(), 0.0f);
+    dist_stamp_.assign(g.cellCount(), 0);
+    stamp_ = 0;
   }
-  using Item = std::pair<float, std::size_t>;
-  std::priority_queue<Item, std::vector<Item>, std::greater<>> queue;
+  if (++stamp_ == 0) {  // wrapped: no stale stamp may look current
+    std::fill(dist_stamp_.begin(), dist_stamp_.end(), 0);
+    stamp_ = 1;
+  }
+  const float inf = std::numeric_limits<float>::infinity();
+  auto distOf = [&](std::size_t i) { return dist_stamp_[i] == stamp_ ? dist_[i] : inf; };
+  for (Candidate& c : candidates) c.cell = g.index(g.cellOf(c.p));
+  heap_.clear();
   const Cell start = g.cellOf(robot);
   if (g.contains(start)) {
-    dist[g.index(start)] = 0.0f;
-    queue.push({0.0f, g.index(start)});
+    dist_[g.index(start)] = 0.0f;
+    dist_stamp_[g.index(start)] = stamp_;
+    heap_.push_back({0.0f, g.index(start)});
   }
+  const double w_c = options_.cost_weight;
+  // True when nothing still open can change the choice, given that every cell up to d is final.
+  auto settled = [&](double d) {
+    const double none = -std::numeric_limits<double>::infinity();
+    double best[2] = {none, none}, open_bound[2] = {none, none};
+    bool open[2] = {false, false};
+    for (const Candidate& c : candidates) {
+      const double dc = distOf(c.cell);
+      if (dc <= d) {
+        if (!c.goal) best[c.sliver] = std::max(best[c.sliver], c.without_cost - w_c * dc);
+        continue;
+      }
+      if (c.goal) return false;
+      open[c.sliver] = true;
+      open_bound[c.sliver] = std::max(open_bound[c.sliver], c.without_cost - w_c * std::max(d, c.cost_m));
+    }
+    const bool points_done = !open[0] || open_bound[0] < best[0];
+    // Slivers matter only when no other point can be chosen.
+    const bool slivers_done = !open[1] || open_bound[1] < best[1] || (best[0] > none && points_done);
+    return points_done && slivers_done;
+  };
   const float res = static_cast<float>(g.resolution_m());
   const float diag = res * std::sqrt(2.0f);
-  while (!queue.empty() && remaining > 0) {
-    const auto [d, i] = queue.top();
-    queue.pop();
-    if (d > dist[i]) continue;
-    if (wanted[i]) {
-      wanted[i] = 0;
-      --remaining;
+  constexpr double kCheckStep_m = 0.25;  // the stop test runs once per this much of radius
+  double next_check_m = 0.0;
+  const auto later = std::greater<>();
+  while (!heap_.empty()) {
+    std::pop_heap(heap_.begin(), heap_.end(), later);
+    const auto [d, i] = heap_.back();
+    heap_.pop_back();
+    if (d > dist_[i]) continue;
+    if (d >= next_check_m) {
+      if (settled(d)) break;
+      next_check_m = d + kCheckStep_m;
     }
     const int x = static_cast<int>(i % w), y = static_cast<int>(i / w);
     for (int dy = -1; dy <= 1; ++dy) {
@@ -315,15 +354,21 @@ std::vector<double> SemanticExplorer::costs(const ExplorationInput& input) const
         const std::size_t j = static_cast<std::size_t>(y + dy) * w + (x + dx);
         if (input.costmap.isLethal(j)) continue;
         const float nd = d + ((dx != 0 && dy != 0) ? diag : res);
-        if (nd < dist[j]) {
-          dist[j] = nd;
-          queue.push({nd, j});
+        if (nd < distOf(j)) {
+          dist_[j] = nd;
+          dist_stamp_[j] = stamp_;
+          heap_.push_back({nd, j});
+          std::push_heap(heap_.begin(), heap_.end(), later);
         }
       }
     }
   }
-  for (std::size_t i = 0; i < points_.size(); ++i) out[i] = dist[g.index(g.cellOf(points_[i].p))];
-  return out;
+  // Final distances: those not above the smallest distance still queued (all when it is empty).
+  const float final_up_to = heap_.empty() ? inf : std::min_element(heap_.begin(), heap_.end())->first;
+  for (Candidate& c : candidates) {
+    const float dc = distOf(c.cell);
+    c.cost_m = dc <= final_up_to ? dc : std::numeric_limits<double>::infinity();
+  }
 }
 
 bool SemanticExplorer::endTest(const ExplorationInput& input) {
@@ -350,6 +395,7 @@ Decision SemanticExplorer::decide(const ExplorationInput& input) {
   }
   markDisc(visited_, g, robot, options_.observed_radius_m);
   updateRoom(input);
+  idle_ = idle_since_s_ >= 0.0 && input.time_s - idle_since_s_ >= options_.idle_end_s - 1e-9;
   collectCandidates(input);
 
   const double owed = (input.time_s - grown_until_s_) * options_.iterations_per_s;
@@ -377,7 +423,6 @@ Decision SemanticExplorer::decide(const ExplorationInput& input) {
   const bool periodic = input.time_s - last_eval_s_ >= options_.replan_period_s - 1e-9;
   if (!points_.empty() && (!has_goal_ || periodic)) {
     last_eval_s_ = input.time_s;
-    const std::vector<double> c = costs(input);
     // Slivers (less than min_unknown_m2 of unknown space in the square) are not worth the trip
     // while anything else is left. When nothing else was found while idling for idle_end_s,
     // rather than end short of the last percent, the robot takes the best sliver in the current
@@ -385,12 +430,7 @@ Decision SemanticExplorer::decide(const ExplorationInput& input) {
     // from its middle, say), then the next, until none is left. Other rooms' slivers and those
     // looked at from close by stay out, so that it does not tour the building's furniture faces
     // at the end. A sliver goal's square is explored already, so it is chosen afresh each call.
-    const bool idle_over = idle_since_s_ >= 0.0 && input.time_s - idle_since_s_ >= options_.idle_end_s - 1e-9;
-    const bool slivers_wanted = !has_goal_ && (chasing_slivers_ || idle_over);
-    double best_score = -std::numeric_limits<double>::infinity();
-    double best_sliver_score = -std::numeric_limits<double>::infinity();
-    double goal_score = -std::numeric_limits<double>::infinity();
-    std::size_t best = points_.size(), best_sliver = points_.size();
+    const bool slivers_wanted = !has_goal_ && (chasing_slivers_ || idle_);
     if (options_.pocket_area_m2 > 0.0) {
       std::vector<Cell> cells;
       cells.reserve(points_.size());
@@ -398,8 +438,10 @@ Decision SemanticExplorer::decide(const ExplorationInput& input) {
       pockets_.assign(g.cellCount(), 0);
       markUnknownPockets(pockets_, input.grid, input.costmap, cells, options_.pocket_area_m2, kPocketOpening_m);
     }
+    // The points that may become the goal, with the score's part that does not depend on C.
+    std::vector<Candidate>& cands = candidates_scored_;
+    cands.clear();
     for (std::size_t i = 0; i < points_.size(); ++i) {
-      if (!std::isfinite(c[i])) continue;  // no path through the costmap
       const std::size_t cell = g.index(g.cellOf(points_[i].p));
       const SquareAreas a = squareAreas(input.grid, points_[i].p, options_.gain_half_side_m);
       const bool sliver =
@@ -407,20 +449,33 @@ Decision SemanticExplorer::decide(const ExplorationInput& input) {
       if (sliver && (!slivers_wanted || visited_[cell])) continue;
       const bool inside = room_ != 0 && roomOf(input, points_[i].anchor) == room_;
       if (sliver && !inside) continue;
-      const double s = score(a.unknown_m2 - a.occupied_m2, c[i], inside);
-      double& best_of_kind = sliver ? best_sliver_score : best_score;
+      cands.push_back({points_[i].p, i, score(a.unknown_m2 - a.occupied_m2, 0.0, inside), sliver, false});
+    }
+    if (has_goal_) {
+      const SquareAreas a = squareAreas(input.grid, goal_m_, options_.gain_half_side_m);
+      const bool inside = room_ != 0 && roomOf(input, goal_anchor_) == room_;
+      cands.push_back({goal_m_, points_.size(), score(a.unknown_m2 - a.occupied_m2, 0.0, inside), false, true});
+    }
+    cost(input, cands);
+    double best_score = -std::numeric_limits<double>::infinity();
+    double best_sliver_score = -std::numeric_limits<double>::infinity();
+    double goal_score = -std::numeric_limits<double>::infinity();
+    std::size_t best = points_.size(), best_sliver = points_.size();
+    for (const Candidate& c : cands) {
+      if (!std::isfinite(c.cost_m)) continue;  // no path through the costmap (or cannot win)
+      const double s = c.without_cost - options_.cost_weight * c.cost_m;
+      if (c.goal) {
+        goal_score = s;
+        continue;
+      }
+      double& best_of_kind = c.sliver ? best_sliver_score : best_score;
       if (s > best_of_kind) {
         best_of_kind = s;
-        (sliver ? best_sliver : best) = i;
+        (c.sliver ? best_sliver : best) = c.point;
       }
     }
     const bool fallback = best == points_.size() && slivers_wanted;
     if (fallback) best = best_sliver;
-    if (has_goal_) {
-      const SquareAreas a = squareAreas(input.grid, goal_m_, options_.gain_half_side_m);
-      const bool inside = room_ != 0 && roomOf(input, goal_anchor_) == room_;
-      goal_score = score(a.unknown_m2 - a.occupied_m2, (goal_m_ - robot).norm(), inside);
-    }
     if (best < points_.size() && (!has_goal_ || best_score > goal_score + options_.switch_margin)) {
       goal_m_ = points_[best].p;
       goal_anchor_ = points_[best].anchor;
@@ -434,7 +489,7 @@ Decision SemanticExplorer::decide(const ExplorationInput& input) {
   }
   // Nothing to assign: wait where we are while the tree grows.
   if (idle_since_s_ < 0.0) idle_since_s_ = input.time_s;
-  if (input.time_s - idle_since_s_ >= options_.idle_end_s) return Decision::done();
+  if (input.time_s - idle_since_s_ >= 2.0 * options_.idle_end_s) return Decision::done();
   if (const auto wait = nearestGoalCell(input.grid, input.costmap, robot, 3.0)) return Decision::goal(*wait);
   return Decision::done();
 }

@@ -13,10 +13,17 @@
 // P_rad is used. An extension toward P_sem takes the full step eta_m along its direction, so
 // the edge crosses the frontier instead of stopping on its free side. An edge that reaches
 // unknown space adds its first unknown point P_i to the frontier point set F.
+// Once the robot has had no goal for idle_end_s (F holds nothing worth the trip), it turns to
+// the slivers of its room (see decide()), and P_sem is drawn with probability 1/2 from every
+// frontier cell of the map, whatever k: uniform samples, all inside the known cells' box,
+// seldom lead an edge across a frontier on the box's edge (the open end of a corridor), and
+// without this one HouseExpo plan ended at 63 % explored.
 //
 // Evaluation (§III-C.2). For each P_i in F: G = (unknown - occupied) area in the square of
-// half-side gain_half_side_m around P_i; C = Euclidean distance from the robot (or, with
-// geodesic_cost, the length of the shortest path through the costmap); S = w_g G - w_c C + A
+// half-side gain_half_side_m around P_i; C = the length of the shortest path from the robot
+// through the costmap's non-lethal cells (or, without geodesic_cost, the Euclidean distance,
+// which makes a point behind a wall look near: L98 15 % longer in small_house, 10 % in
+// large_office, 1 % shorter in medium_house; docs/semantic_tuning.md, session 11); S = w_g G - w_c C + A
 // when P_i lies in the current room, - A otherwise. P_i itself is unknown, so its room is that
 // of the known-free cell the edge left from (its anchor); an anchor in no room yet counts as
 // outside. Free cells the segmentation has not labelled yet (seen since its last update) take
@@ -39,8 +46,9 @@
 //
 // End: as improved_rrt (fewer than end_min_frontier_cells reachable frontier cells in
 // end_checks consecutive checks, each end_check_period_s; cells the robot came within
-// observed_radius_m of are ignored), or no point to assign for idle_end_s and no sliver left
-// in the current room that the robot has not come close to (see decide()).
+// observed_radius_m of are ignored), or no point to assign for twice idle_end_s (no sliver
+// left in the current room that the robot has not come close to, see decide(), and none found
+// by the frontier-wide P_sem of the second half).
 //
 // Without a semantic map (ExplorationInput::semantic null) no point is in a room: sampling is
 // uniform and every point scores -A, i.e. the plain RRT score.
@@ -71,7 +79,7 @@ struct SemanticExplorerOptions {
                                        ///< far room corners)
   double pocket_area_m2 = 2.0;         ///< points opening onto less unknown, non-lethal area
                                        ///< (4-connected) count as slivers; 0 = off [m^2]
-  bool geodesic_cost = false;          ///< C = path length through the costmap, not Euclidean
+  bool geodesic_cost = true;           ///< C = path length through the costmap, not Euclidean
   double eta_m = 1.0;                  ///< tree step [m]
   double iterations_per_s = 100.0;     ///< tree iterations per simulated second
   double replan_period_s = 2.0;        ///< re-evaluation period while driving [s]
@@ -83,7 +91,8 @@ struct SemanticExplorerOptions {
   int end_min_frontier_cells = 2;      ///< fewer reachable frontier cells fail the end test
   double observed_radius_m = 0.75;     ///< end test ignores frontier cells that stayed unknown
                                        ///< with the robot this close [m]
-  double idle_end_s = 30.0;            ///< no point to assign for this long ends exploration [s]
+  double idle_end_s = 30.0;            ///< idling this long: slivers, then P_sem from every
+                                       ///< frontier cell; twice this ends exploration [s]
   int max_iterations_per_call = 20000; ///< cap on owed iterations run in one call
 
   void validate() const;
@@ -132,7 +141,18 @@ class SemanticExplorer final : public ExplorationStrategy {
   bool stale(const ExplorationInput& input, const Vec2& p) const;
   bool goalExplored(const ExplorationInput& input) const;
   bool blacklisted(const Vec2& p) const;
-  std::vector<double> costs(const ExplorationInput& input) const;
+  /// A point that may become the goal (or the goal itself), while the points are scored.
+  struct Candidate {
+    Vec2 p;
+    std::size_t point;    ///< index into points_ (points_.size() for the goal)
+    double without_cost;  ///< S without the cost term: w_g G +- A
+    bool sliver;
+    bool goal;
+    double cost_m = 0.0;  ///< C; infinite when unreachable (or, geodesic, when it cannot win)
+    std::size_t cell = 0;
+  };
+  /// Sets every candidate's C (see SemanticExplorerOptions::geodesic_cost).
+  void cost(const ExplorationInput& input, std::vector<Candidate>& candidates);
   bool endTest(const ExplorationInput& input);
 
   SemanticExplorerOptions options_;
@@ -155,6 +175,12 @@ class SemanticExplorer final : public ExplorationStrategy {
   std::vector<Vec2> blacklist_;
   std::vector<std::uint8_t> visited_;
   std::vector<std::uint8_t> pockets_;
+  std::vector<Candidate> candidates_scored_;
+  std::vector<float> dist_;                  ///< geodesic C: Dijkstra distances [m] ...
+  std::vector<std::uint32_t> dist_stamp_;    ///< ... valid where the stamp is stamp_
+  std::uint32_t stamp_ = 0;
+  std::vector<std::pair<float, std::size_t>> heap_;
+  bool idle_ = false;  ///< idle for idle_end_s: P_sem is drawn from every frontier cell
   bool has_goal_ = false;
   Vec2 goal_m_ = Vec2::Zero();
   Vec2 goal_anchor_ = Vec2::Zero();
