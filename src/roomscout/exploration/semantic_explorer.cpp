@@ -325,7 +325,7 @@ void SemanticExplorer::cost(const ExplorationInput& input, std::vector<Candidate
     }
     return false;
   };
-  for (Candidate& c : candidates) c.cell = blockOf(c.p);
+  for (Candidate& c : candidates) c.block = blockOf(c.p);
   heap_.clear();
   const std::size_t start = blockOf(robot);
   if (start < blocks) {
@@ -340,7 +340,7 @@ void SemanticExplorer::cost(const ExplorationInput& input, std::vector<Candidate
     double best[2] = {none, none}, open_bound[2] = {none, none};
     bool open[2] = {false, false};
     for (const Candidate& c : candidates) {
-      const double dc = c.cell < blocks ? distOf(c.cell) : inf;
+      const double dc = c.block < blocks ? distOf(c.block) : inf;
       if (dc <= d) {
         if (!c.goal) best[c.sliver] = std::max(best[c.sliver], c.without_cost - w_c * dc);
         continue;
@@ -386,7 +386,7 @@ void SemanticExplorer::cost(const ExplorationInput& input, std::vector<Candidate
   // Final distances: those not above the smallest distance still queued (all when it is empty).
   const float final_up_to = heap_.empty() ? inf : std::min_element(heap_.begin(), heap_.end())->first;
   for (Candidate& c : candidates) {
-    const float dc = c.cell < blocks ? distOf(c.cell) : inf;
+    const float dc = c.block < blocks ? distOf(c.block) : inf;
     c.cost_m = dc <= final_up_to ? dc : std::numeric_limits<double>::infinity();
   }
 }

@@ -149,7 +149,7 @@ class SemanticExplorer final : public ExplorationStrategy {
     bool sliver;
     bool goal;
     double cost_m = 0.0;  ///< C; infinite when unreachable (or, geodesic, when it cannot win)
-    std::size_t cell = 0;
+    std::size_t block = 0;  ///< geodesic C: the search block of p
   };
   /// Sets every candidate's C (see SemanticExplorerOptions::geodesic_cost).
   void cost(const ExplorationInput& input, std::vector<Candidate>& candidates);
