@@ -21,13 +21,14 @@
 //
 // Evaluation (§III-C.2). For each P_i in F: G = (unknown - occupied) area in the square of
 // half-side gain_half_side_m around P_i; C = the length of the shortest path from the robot
-// through the costmap's non-lethal cells (or, without geodesic_cost, the Euclidean distance,
-// which makes a point behind a wall look near: L98 15 % longer in small_house, 10 % in
-// large_office, 1 % shorter in medium_house; docs/semantic_tuning.md, session 11); S = w_g G - w_c C + A
-// when P_i lies in the current room, - A otherwise. P_i itself is unknown, so its room is that
-// of the known-free cell the edge left from (its anchor); an anchor in no room yet counts as
-// outside. Free cells the segmentation has not labelled yet (seen since its last update) take
-// the room of the nearest labelled cell within label_search_m.
+// past the costmap's lethal cells, searched on 0.1 m blocks (or, without geodesic_cost, the
+// Euclidean distance, which makes a point behind a wall look near: L98 15 % longer in
+// small_house, 10 % in large_office, 1 % shorter in medium_house; docs/semantic_tuning.md,
+// session 11); S = w_g G - w_c C + A when P_i lies in the current room, - A otherwise. P_i
+// itself is unknown, so its room is that of the known-free cell the edge left from (its
+// anchor); an anchor in no room yet counts as outside. Free cells the segmentation has not
+// labelled yet (seen since its last update) take the room of the nearest labelled cell within
+// label_search_m.
 // The best S among the points that are no slivers becomes the goal (slivers only at the very
 // end, see decide()). A sliver has less than min_unknown_m2 of unknown space in its square, or
 // opens onto a pocket: less than pocket_area_m2 of unknown, non-lethal space 4-connected to it
