@@ -185,7 +185,6 @@ class SemanticExplorer final : public ExplorationStrategy {
   bool has_goal_ = false;
   Vec2 goal_m_ = Vec2::Zero();
   Vec2 goal_anchor_ = Vec2::Zero();
-  bool goal_in_room_ = false;
 };
 
 }  // namespace roomscout
