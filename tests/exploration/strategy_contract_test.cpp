@@ -31,6 +31,7 @@ class CheckedStrategy final : public ExplorationStrategy {
   void onGoalReached(const Vec2& g) override { inner_->onGoalReached(g); }
   void onGoalFailed(const Vec2& g) override { inner_->onGoalFailed(g); }
   double replanPeriod_s() const override { return inner_->replanPeriod_s(); }
+  bool readsRooms() const override { return inner_->readsRooms(); }
   std::vector<ParameterRef> parameters() override { return inner_->parameters(); }
   void validateOptions() const override { inner_->validateOptions(); }
   int goals = 0;

@@ -76,6 +76,19 @@ TEST(SemanticMap, IdsStableAcrossGrowingPartialMaps) {
   EXPECT_EQ(map.updateCount(), 6);
 }
 
+TEST(SemanticMap, ACopyKeepsItsRoomsWhenTheOriginalIsUpdated) {
+  const cv::Mat m = test::threeRoomsAndCorridor();
+  SemanticMap map;
+  updateWith(map, m);
+  const SemanticMap copy = map;  // shares the label image until the next update
+  const cv::Mat before = map.labels().clone();
+  // The same map with every room gone: an update of the same size.
+  map.update(geometryOf(m), cv::Mat::zeros(m.size(), CV_32S), m);
+  EXPECT_EQ(cv::countNonZero(map.labels()), 0);
+  EXPECT_EQ(cv::countNonZero(copy.labels() != before), 0);
+  EXPECT_EQ(copy.regions().size(), 4u);
+}
+
 TEST(SemanticMap, RejectsLabelsOfAnotherSize) {
   SemanticMap map;
   EXPECT_THROW(map.update(GridGeometry(Vec2::Zero(), 0.05, 4, 4), cv::Mat::zeros(3, 4, CV_32S), cv::Mat()),

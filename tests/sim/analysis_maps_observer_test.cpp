@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <opencv2/core.hpp>
+
 #include "roomscout/core/errors.hpp"
 #include "roomscout/sim/world_model.hpp"
 #include "test_worlds.hpp"
@@ -33,12 +35,15 @@ OccupancyGrid revealed(double seen_m) {
 struct Observed {
   std::size_t semantic_updates = 0, topological_updates = 0;
   TopologicalMap topology;
+  cv::Mat room_labels;
 };
 
-Observed drive(const AnalysisMapsOptions& options) {
+/// @param rooms_worker, skeleton_worker where each map is built (null: at once)
+Observed drive(const AnalysisMapsOptions& options, MapWorker* rooms_worker = nullptr,
+               MapWorker* skeleton_worker = nullptr) {
   const WorldModel model(testing::squareRoom(4.0));
-  AnalysisMapsObserver semantic(AnalysisMapKind::kSemantic, options);
-  AnalysisMapsObserver topological(AnalysisMapKind::kTopological, options, &semantic);
+  AnalysisMapsObserver semantic(AnalysisMapKind::kSemantic, options, nullptr, rooms_worker);
+  AnalysisMapsObserver topological(AnalysisMapKind::kTopological, options, &semantic, skeleton_worker);
   double t = 0.0;
   for (double seen_m = 2.0; seen_m <= 16.0; seen_m += 1.0, t += 1.0) {
     const OccupancyGrid grid = revealed(seen_m);
@@ -50,7 +55,17 @@ Observed drive(const AnalysisMapsOptions& options) {
     o->onFinish(EpisodeSnapshot{t, Pose2{}, final_grid, model, true});
   }
   return {semantic.updateTimes_ms().size(), topological.updateTimes_ms().size(),
-          topological.topologicalMap()};
+          topological.topologicalMap(), semantic.semanticMap()->labels().clone()};
+}
+
+void expectSameTopology(const TopologicalMap& a, const TopologicalMap& b) {
+  ASSERT_EQ(a.nodes().size(), b.nodes().size());
+  ASSERT_EQ(a.edges().size(), b.edges().size());
+  for (std::size_t i = 0; i < a.nodes().size(); ++i) {
+    EXPECT_EQ(a.nodes()[i].position_m, b.nodes()[i].position_m);
+    EXPECT_EQ(a.nodes()[i].region_id, b.nodes()[i].region_id);
+  }
+  for (std::size_t i = 0; i < a.edges().size(); ++i) EXPECT_EQ(a.edges()[i].polyline_m, b.edges()[i].polyline_m);
 }
 
 TEST(AnalysisMapsObserver, TopologyFollowsTheRoomsOrEveryNthOfTheirUpdates) {
@@ -63,15 +78,42 @@ TEST(AnalysisMapsObserver, TopologyFollowsTheRoomsOrEveryNthOfTheirUpdates) {
   EXPECT_EQ(sparse.semantic_updates, every.semantic_updates);
   EXPECT_EQ(sparse.topological_updates, 4u + 1u);  // updates 1, 5, 9, 13 of 15, then the end
   // The final topological map is the same.
-  ASSERT_EQ(sparse.topology.nodes().size(), every.topology.nodes().size());
-  ASSERT_EQ(sparse.topology.edges().size(), every.topology.edges().size());
   ASSERT_GT(every.topology.edges().size(), 0u);
-  for (std::size_t i = 0; i < every.topology.nodes().size(); ++i) {
-    EXPECT_EQ(sparse.topology.nodes()[i].position_m, every.topology.nodes()[i].position_m);
-    EXPECT_EQ(sparse.topology.nodes()[i].region_id, every.topology.nodes()[i].region_id);
+  expectSameTopology(sparse.topology, every.topology);
+}
+
+TEST(AnalysisMapsObserver, MapsBuiltOnAWorkerAreThoseBuiltAtOnce) {
+  const Observed at_once = drive({});
+  ASSERT_GT(at_once.topology.edges().size(), 0u);
+  double max_id = 0.0;
+  cv::minMaxLoc(at_once.room_labels, nullptr, &max_id);
+  EXPECT_GE(max_id, 3.0);  // the three rooms
+  auto expectSame = [&](const Observed& o) {
+    EXPECT_EQ(o.semantic_updates, at_once.semantic_updates);
+    EXPECT_EQ(o.topological_updates, at_once.topological_updates);
+    expectSameTopology(o.topology, at_once.topology);
+    ASSERT_EQ(o.room_labels.size(), at_once.room_labels.size());
+    EXPECT_EQ(cv::countNonZero(o.room_labels != at_once.room_labels), 0);
+  };
+  {
+    SCOPED_TRACE("rooms and skeleton on one worker");
+    MapWorker worker(true);
+    expectSame(drive({}, &worker, &worker));
   }
-  for (std::size_t i = 0; i < every.topology.edges().size(); ++i) {
-    EXPECT_EQ(sparse.topology.edges()[i].polyline_m, every.topology.edges()[i].polyline_m);
+  {
+    SCOPED_TRACE("rooms at once, skeleton on a worker (reads copies of the rooms)");
+    MapWorker worker(true);
+    expectSame(drive({}, nullptr, &worker));
+  }
+  {
+    SCOPED_TRACE("rooms and skeleton on two workers (waits for the rooms, reads copies)");
+    MapWorker rooms(true), skeleton(true);
+    expectSame(drive({}, &rooms, &skeleton));
+  }
+  {
+    SCOPED_TRACE("rooms on a worker, skeleton at once (waits for the rooms)");
+    MapWorker rooms(true);
+    expectSame(drive({}, &rooms, nullptr));
   }
 }
 

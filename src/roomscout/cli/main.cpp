@@ -7,6 +7,7 @@
 #include <iostream>
 #include <optional>
 #include <sstream>
+#include <thread>
 
 #include "roomscout/cli/bench_commands.hpp"
 #include "roomscout/cli/map_commands.hpp"
@@ -81,6 +82,8 @@ int runExplore(const ExploreArgs& args) {
   settings.config_file = args.config;
   settings.max_time_s = args.max_time_s;
   settings.remove_floor = args.remove_floor;
+  // One episode: the maps the strategy does not read are built beside it, on a second core.
+  settings.background_maps = std::thread::hardware_concurrency() > 1;
   settings.validate();
 
   std::optional<std::filesystem::path> labels;

@@ -56,6 +56,10 @@ class ExplorationStrategy {
   virtual void onGoalFailed(const Vec2& /*goal_m*/) {}
   /// Seconds between decisions while a goal is active; 0 means only on events.
   virtual double replanPeriod_s() const { return 0.0; }
+  /// True when decide() reads ExplorationInput::semantic. Only then does a runner hand it the
+  /// rooms, and keep them up to date before each decision; otherwise it may build them in
+  /// the background.
+  virtual bool readsRooms() const { return false; }
 
   /// The strategy's tunable options, for configuration files and run records.
   virtual std::vector<ParameterRef> parameters() { return {}; }

@@ -99,7 +99,8 @@ void SemanticMap::update(const GridGeometry& geometry, const cv::Mat& segment_la
   }
 
   geometry_ = geometry;
-  labels_ = cv::Mat::zeros(segment_labels.size(), CV_32S);
+  // A new image, never the old one rewritten: copies of this map keep their labels.
+  labels_ = cv::Mat(segment_labels.size(), CV_32S, cv::Scalar(0));
   struct Acc {
     int cells = 0;
     double sx = 0, sy = 0;

@@ -31,7 +31,8 @@ struct SemanticRegion {
   std::vector<int> neighbours;              ///< ids of rooms it shares a border (a door) with
 };
 
-/// Rooms on a grid. Not thread-safe for concurrent update() and reads.
+/// Rooms on a grid. Not thread-safe for concurrent update() and reads. A copy is cheap (it
+/// shares the label image) and stays as it was: update() gives the map a new label image.
 class SemanticMap {
  public:
   SemanticMap() = default;

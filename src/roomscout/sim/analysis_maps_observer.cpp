@@ -25,13 +25,23 @@ std::vector<ParameterRef> AnalysisMapsOptions::parameters() {
 }
 
 AnalysisMapsObserver::AnalysisMapsObserver(AnalysisMapKind kind, const AnalysisMapsOptions& options,
-                                           const AnalysisMapsObserver* rooms)
+                                           const AnalysisMapsObserver* rooms, MapWorker* worker)
     : kind_(kind),
       options_(options),
-      rooms_(rooms),
+      rooms_(kind == AnalysisMapKind::kTopological ? rooms : nullptr),
+      worker_(worker),
       segmenter_(options.segmentation),
       builder_(options.topology) {
   options_.validate();
+}
+
+AnalysisMapsObserver::~AnalysisMapsObserver() {
+  // Jobs still queued refer to this observer.
+  if (worker_ == nullptr) return;
+  try {
+    worker_->drain();
+  } catch (...) {  // the episode that posted them has failed already
+  }
 }
 
 std::string_view AnalysisMapsObserver::name() const {
@@ -47,8 +57,8 @@ void AnalysisMapsObserver::onStep(const EpisodeSnapshot& snapshot) {
   if (kind_ == AnalysisMapKind::kTopological && rooms_ != nullptr) {
     // Follow the schedule of the rooms that label the nodes: rebuild right after they were
     // rebuilt, instead of counting the known cells a second time for the same decision.
-    if (rooms_->update_ms_.size() != rooms_updates_seen_) {
-      rooms_updates_seen_ = rooms_->update_ms_.size();
+    if (rooms_->updates_ != rooms_updates_seen_) {
+      rooms_updates_seen_ = rooms_->updates_;
       if (due_updates_++ % options_.topology_every == 0) update(snapshot.grid);
     }
     return;
@@ -67,22 +77,41 @@ void AnalysisMapsObserver::onStep(const EpisodeSnapshot& snapshot) {
 
 void AnalysisMapsObserver::onFinish(const EpisodeSnapshot& snapshot) {
   if (changed_ || snapshot.grid_changed || !updated_once_) update(snapshot.grid);
+  if (worker_ != nullptr) worker_->drain();
 }
 
 void AnalysisMapsObserver::update(const OccupancyGrid& grid) {
-  const auto t0 = std::chrono::steady_clock::now();
-  maps::stateImage(grid, states_);
-  const cv::Mat& states = states_;
-  if (kind_ == AnalysisMapKind::kSemantic) {
-    const RoomSegmentation seg = segmenter_.segment(states, grid.geometry().resolution_m());
-    semantic_.update(grid.geometry(), seg.labels, states);
-  } else {
-    const SemanticMap* rooms = rooms_ ? rooms_->semanticMap() : nullptr;
-    topology_ = builder_.build(states, grid.geometry(), rooms);
-  }
-  update_ms_.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+  ++updates_;
   changed_ = false;
   updated_once_ = true;
+  // Rooms built on another thread are read once that thread has built them.
+  const auto background = [](const MapWorker* w) { return w != nullptr && w->background(); };
+  if (rooms_ != nullptr && background(rooms_->worker_) && rooms_->worker_ != worker_) rooms_->worker_->drain();
+  if (!background(worker_)) {
+    maps::stateImage(grid, states_);
+    build(states_, grid.geometry(), nullptr);
+    return;
+  }
+  // The rooms that label the nodes are those of the rooms' latest update. Rooms built on this
+  // worker are read when this job runs, after theirs; others are copied now (the copy shares
+  // their label image, which an update replaces rather than writes into).
+  std::shared_ptr<const SemanticMap> rooms;
+  if (rooms_ != nullptr && rooms_->worker_ != worker_) rooms = std::make_shared<const SemanticMap>(rooms_->semantic_);
+  worker_->post([this, states = maps::stateImage(grid), geometry = grid.geometry(), rooms = std::move(rooms)] {
+    build(states, geometry, rooms);
+  });
+}
+
+void AnalysisMapsObserver::build(const cv::Mat& states, const GridGeometry& geometry,
+                                 std::shared_ptr<const SemanticMap> rooms) {
+  const auto t0 = std::chrono::steady_clock::now();
+  if (kind_ == AnalysisMapKind::kSemantic) {
+    const RoomSegmentation seg = segmenter_.segment(states, geometry.resolution_m());
+    semantic_.update(geometry, seg.labels, states);
+  } else {
+    topology_ = builder_.build(states, geometry, rooms ? rooms.get() : rooms_ ? rooms_->semanticMap() : nullptr);
+  }
+  update_ms_.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
 }
 
 }  // namespace roomscout::sim

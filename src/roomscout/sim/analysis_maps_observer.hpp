@@ -4,7 +4,14 @@
 // two instances: the semantic one ("semantic") owns the rooms that strategies read; the
 // topological one ("topological") builds the skeleton graph and, given the semantic one,
 // labels its nodes with room ids. Attach the semantic observer first.
+//
+// Given a MapWorker, an observer decides on the episode's thread when to update and what from
+// (a copy of the grid's states, and of the rooms it labels nodes with, unless they are built
+// on the same worker), and the worker builds the map: the maps and update times are those of
+// updating at once, and may be read after onFinish(). The rooms a strategy reads must be
+// built without a worker.
 
+#include <memory>
 #include <string_view>
 #include <vector>
 
@@ -13,6 +20,7 @@
 #include "roomscout/maps/topological_map.hpp"
 #include "roomscout/maps/topology_builder.hpp"
 #include "roomscout/sim/episode_observer.hpp"
+#include "roomscout/sim/map_worker.hpp"
 
 namespace roomscout::sim {
 
@@ -39,30 +47,38 @@ class AnalysisMapsObserver final : public EpisodeObserver {
  public:
   /// @param rooms for the topological kind: the semantic observer whose rooms label the
   ///        nodes (borrowed; may be null)
+  /// @param worker runs the updates (borrowed; must outlive the observer); null: at once
   AnalysisMapsObserver(AnalysisMapKind kind, const AnalysisMapsOptions& options = {},
-                       const AnalysisMapsObserver* rooms = nullptr);
+                       const AnalysisMapsObserver* rooms = nullptr, MapWorker* worker = nullptr);
+  ~AnalysisMapsObserver() override;
 
   std::string_view name() const override;
   void onStep(const EpisodeSnapshot& snapshot) override;
   void onFinish(const EpisodeSnapshot& snapshot) override;
   const std::vector<double>& updateTimes_ms() const override { return update_ms_; }
-  /// The rooms (semantic kind only; nullptr for the topological kind).
+  /// The rooms (semantic kind only; nullptr for the topological kind). With a worker, up to
+  /// date only after onFinish().
   const SemanticMap* semanticMap() const override;
-  /// The skeleton graph (topological kind; empty for the semantic kind).
+  /// The skeleton graph (topological kind; empty for the semantic kind). With a worker, up to
+  /// date only after onFinish().
   const TopologicalMap& topologicalMap() const { return topology_; }
 
  private:
   void update(const OccupancyGrid& grid);
+  /// Builds the map from one update's inputs (on the worker, if any).
+  void build(const cv::Mat& states, const GridGeometry& geometry, std::shared_ptr<const SemanticMap> rooms);
 
   AnalysisMapKind kind_;
   AnalysisMapsOptions options_;
   const AnalysisMapsObserver* rooms_;
+  MapWorker* worker_;
   RoomSegmenter segmenter_;
   TopologyBuilder builder_;
   SemanticMap semantic_;
   TopologicalMap topology_;
   cv::Mat states_;  ///< the grid's cell states at the last update (buffer reused)
-  std::vector<double> update_ms_;
+  std::vector<double> update_ms_;  ///< written by build()
+  std::size_t updates_ = 0;         ///< updates decided so far (build() may still be behind)
   double next_update_s_ = 0.0;
   bool changed_ = false;
   std::size_t known_at_update_ = 0;

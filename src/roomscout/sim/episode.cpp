@@ -183,7 +183,7 @@ EpisodeResult runEpisode(const WorldModel& world, EpisodeConfig config, Explorat
   std::vector<double> occupancy_ms, costmap_ms, decision_ms;
   const SemanticMap* semantic = nullptr;
   for (const EpisodeObserver* o : observers) {
-    if (!semantic) semantic = o->semanticMap();
+    if (!semantic && strategy.readsRooms()) semantic = o->semanticMap();
   }
   double t = 0.0;
   double next_scan_s = 0.0, next_metrics_s = 0.0, next_decision_s = 0.0;

@@ -114,7 +114,7 @@ using EpisodeProgress = std::function<void(double time_s, double max_time_s, dou
 /// Runs one episode. The world model is shared read-only; everything else is created here
 /// from `config` and `seed`, so the same inputs give the same result. `observers` build
 /// further maps as the robot explores; the first one that has a semanticMap() feeds the
-/// strategy's ExplorationInput::semantic.
+/// strategy's ExplorationInput::semantic, when the strategy readsRooms().
 EpisodeResult runEpisode(const WorldModel& world, EpisodeConfig config, ExplorationStrategy& strategy,
                          std::uint64_t seed, const EpisodeProgress& progress = {},
                          const std::vector<EpisodeObserver*>& observers = {});

@@ -19,8 +19,9 @@ std::vector<ParameterGroup> PointCloudObserverOptions::groups() {
 }
 
 PointCloudObserver::PointCloudObserver(const WorldModel& world, const PointCloudObserverOptions& options,
-                                       std::uint64_t seed)
+                                       std::uint64_t seed, MapWorker* worker)
     : options_(options),
+      worker_(worker),
       columns_(std::make_unique<ColumnWorld>(world)),
       lidar_(*columns_, options.lidar, seed),
       keyframes_(options.keyframes),
@@ -28,15 +29,31 @@ PointCloudObserver::PointCloudObserver(const WorldModel& world, const PointCloud
   options_.validate();
 }
 
+PointCloudObserver::~PointCloudObserver() {
+  // Jobs still queued refer to this observer.
+  if (worker_ == nullptr) return;
+  try {
+    worker_->drain();
+  } catch (...) {  // the episode that posted them has failed already
+  }
+}
+
 void PointCloudObserver::onStep(const EpisodeSnapshot& snapshot) {
   if (snapshot.time_s < next_scan_s_ - 1e-9) return;
   next_scan_s_ += 1.0 / options_.lidar.rate_hz;
   ++scans_;
   // The keyframe rule needs only the pose, so revolutions that are not keyframes are not cast.
-  if (keyframes_.accept(snapshot.robot)) insertScan(snapshot.robot);
+  if (!keyframes_.accept(snapshot.robot)) return;
+  if (worker_ != nullptr && worker_->background()) {
+    worker_->post([this, pose = snapshot.robot] { insertScan(pose); });
+  } else {
+    insertScan(snapshot.robot);
+  }
 }
 
-void PointCloudObserver::onFinish(const EpisodeSnapshot&) {}
+void PointCloudObserver::onFinish(const EpisodeSnapshot&) {
+  if (worker_ != nullptr) worker_->drain();
+}
 
 void PointCloudObserver::insertScan(const Pose2& T_map_robot) {
   const auto start = std::chrono::steady_clock::now();

@@ -3,6 +3,7 @@
 // robot revolves at its rate; revolutions taken at keyframe poses (LIO-SAM's rule by default)
 // are cast against the ColumnWorld, moved into the map frame by the robot's pose and
 // inserted into a voxel-filtered PointCloudMap. Each update time covers ray cast + insert.
+// Given a MapWorker, the keyframes are cast and inserted there, in order (the same map).
 
 #include <cstdint>
 #include <memory>
@@ -14,6 +15,7 @@
 #include "roomscout/sim/column_world.hpp"
 #include "roomscout/sim/episode_observer.hpp"
 #include "roomscout/sim/lidar_simulator.hpp"
+#include "roomscout/sim/map_worker.hpp"
 
 namespace roomscout::sim {
 
@@ -31,7 +33,12 @@ struct PointCloudObserverOptions {
 class PointCloudObserver final : public EpisodeObserver {
  public:
   /// `world` must outlive the observer. Builds the 3D ground truth (ColumnWorld) of `world`.
-  PointCloudObserver(const WorldModel& world, const PointCloudObserverOptions& options, std::uint64_t seed);
+  /// @param worker casts and inserts the keyframes (borrowed; must outlive the observer);
+  ///        null: at once. With a worker, map() and the update times are up to date only
+  ///        after onFinish().
+  PointCloudObserver(const WorldModel& world, const PointCloudObserverOptions& options, std::uint64_t seed,
+                     MapWorker* worker = nullptr);
+  ~PointCloudObserver() override;
 
   std::string_view name() const override { return "pointcloud"; }
   void onStep(const EpisodeSnapshot& snapshot) override;
@@ -50,6 +57,7 @@ class PointCloudObserver final : public EpisodeObserver {
   void insertScan(const Pose2& T_map_robot);
 
   PointCloudObserverOptions options_;
+  MapWorker* worker_;
   std::unique_ptr<ColumnWorld> columns_;
   LidarSimulator lidar_;
   KeyframeSelector keyframes_;

@@ -1,0 +1,46 @@
+#pragma once
+// A background thread for the map updates of an episode that nothing reads while the robot
+// explores (the point cloud, the skeleton graph, and the rooms when the strategy ignores
+// them), as a robot runs its map builders as nodes beside its planner. Jobs run one at a time
+// in the order they were posted, so a map comes out the same as if every update had run at
+// once on the caller's thread; a worker made without a thread does exactly that.
+
+#include <condition_variable>
+#include <deque>
+#include <exception>
+#include <functional>
+#include <mutex>
+#include <thread>
+
+namespace roomscout::sim {
+
+class MapWorker {
+ public:
+  /// @param background false: post() runs each job at once on the caller's thread
+  explicit MapWorker(bool background);
+  /// Waits for the jobs posted so far (their errors are dropped: call drain() to see them).
+  ~MapWorker();
+  MapWorker(const MapWorker&) = delete;
+  MapWorker& operator=(const MapWorker&) = delete;
+
+  bool background() const { return thread_.joinable(); }
+  /// Runs `job` after every job posted before it. A job's inputs must be its own (copies):
+  /// the caller goes on while it runs.
+  void post(std::function<void()> job);
+  /// Waits until every posted job has run, then rethrows the first error a job threw (the
+  /// jobs posted after a failed one are skipped: the maps they would update are suspect).
+  void drain();
+
+ private:
+  void loop();
+
+  std::mutex mutex_;
+  std::condition_variable wake_, idle_;
+  std::deque<std::function<void()>> jobs_;
+  bool running_job_ = false;
+  bool stop_ = false;
+  std::exception_ptr error_;
+  std::thread thread_;  ///< last: starts once the members above exist
+};
+
+}  // namespace roomscout::sim
