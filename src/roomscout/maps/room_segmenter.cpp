@@ -14,6 +14,7 @@ namespace roomscout {
 namespace {
 
 constexpr float kBinsPerCell = 4.0f;  // clearance quantisation: a quarter cell
+constexpr int kSweepAhead = 16;       // cells between a prefetch and its use in the sweep
 
 /// A room core found by the sweep: the connected part of {clearance bin > level} that holds
 /// `pixel` (level -1: the whole component).
@@ -186,9 +187,19 @@ int segmentKnown(const RoomSegmenterOptions& options, const cv::Mat& states, dou
   std::vector<Core>& cores = s.cores;
   cores.clear();
   auto isRoom = [&](int r) { return root[r].area >= min_room_cells && root[r].peak() >= core_bin; };
+  const int swept = static_cast<int>(order.size());
   for (int rank = 0; rank <= max_bin; ++rank) {
     const int level = max_bin - rank;
     for (int i = start[rank]; i < start[rank + 1]; ++i) {
+      // Cells come in clearance order, scattered over the map: fetch the parents of a cell's
+      // neighbours (three rows) and its root slot a few cells ahead.
+      if (i + kSweepAhead < swept) {
+        const int ahead = order[i + kSweepAhead];
+        __builtin_prefetch(parent + ahead - w, 1);
+        __builtin_prefetch(parent + ahead, 1);
+        __builtin_prefetch(parent + ahead + w, 1);
+        __builtin_prefetch(root + ahead, 1);
+      }
       const int p = order[i];
       parent[p] = p;
       root[p] = {1, p, level << 1};
