@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 #include <opencv2/imgproc.hpp>
@@ -162,10 +163,24 @@ std::vector<Cell> reachableFrontierCells(const OccupancyGrid& grid, const Costma
   } else {
     candidates = unknown;
   }
-  std::vector<cv::Point> points;  // row-major, as findNonZero returns them
-  cv::findNonZero(candidates(cv::Rect(2, 2, w - 4, h - 4)), points);
-  for (const cv::Point& p : points) {
-    if (isFrontier(p.x + 2, p.y + 2)) out.push_back({p.x + 2, p.y + 2});
+  // Row-major over the inner part (the test needs two cells of margin). Candidates are
+  // sparse: eight bytes are skipped at a time where all are zero (cv::findNonZero visits
+  // every byte, and took 4 % of an mmpf episode).
+  for (int y = 2; y < h - 2; ++y) {
+    const std::uint8_t* row = candidates.ptr<std::uint8_t>(y);
+    int x = 2;
+    while (x < w - 2) {
+      if (x + 8 <= w - 2) {
+        std::uint64_t word;
+        std::memcpy(&word, row + x, sizeof word);
+        if (word == 0) {
+          x += 8;
+          continue;
+        }
+      }
+      if (row[x] && isFrontier(x, y)) out.push_back({x, y});
+      ++x;
+    }
   }
   return out;
 }
