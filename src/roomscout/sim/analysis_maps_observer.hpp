@@ -7,9 +7,9 @@
 //
 // Given a MapWorker, an observer decides on the episode's thread when to update and what from
 // (a copy of the grid's states, and of the rooms it labels nodes with, unless they are built
-// on the same worker), and the worker builds the map: the maps and update times are those of
-// updating at once, and may be read after onFinish(). The rooms a strategy reads must be
-// built without a worker.
+// on the same worker), and the worker builds the map: the maps are those of updating at once,
+// and they and the update times may be read after onFinish(). The rooms a strategy reads must
+// be built without a worker.
 
 #include <memory>
 #include <string_view>
