@@ -64,6 +64,19 @@ TEST(MapWorker, DrainRethrowsTheFirstErrorAndLaterJobsAreSkipped) {
   }
 }
 
+TEST(MapWorker, WaitKeepsTheErrorForDrain) {
+  MapWorker worker(true);
+  bool ran = false;
+  worker.post([&] {
+    ran = true;
+    throw std::runtime_error("kept");
+  });
+  worker.wait();
+  EXPECT_TRUE(ran);
+  EXPECT_THROW(worker.drain(), std::runtime_error);
+  EXPECT_NO_THROW(worker.drain());
+}
+
 TEST(MapWorker, DestructorLetsQueuedJobsFinish) {
   int runs = 0;
   {

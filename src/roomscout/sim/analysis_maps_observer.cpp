@@ -36,12 +36,7 @@ AnalysisMapsObserver::AnalysisMapsObserver(AnalysisMapKind kind, const AnalysisM
 }
 
 AnalysisMapsObserver::~AnalysisMapsObserver() {
-  // Jobs still queued refer to this observer.
-  if (worker_ == nullptr) return;
-  try {
-    worker_->drain();
-  } catch (...) {  // the episode that posted them has failed already
-  }
+  if (worker_ != nullptr) worker_->wait();  // jobs still queued refer to this observer
 }
 
 std::string_view AnalysisMapsObserver::name() const {

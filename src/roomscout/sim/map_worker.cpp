@@ -45,6 +45,11 @@ void MapWorker::drain() {
   if (error) std::rethrow_exception(error);
 }
 
+void MapWorker::wait() noexcept {
+  std::unique_lock lock(mutex_);
+  idle_.wait(lock, [this] { return jobs_.empty() && !running_job_; });
+}
+
 void MapWorker::loop() {
   std::unique_lock lock(mutex_);
   for (;;) {

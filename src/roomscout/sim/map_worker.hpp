@@ -30,6 +30,9 @@ class MapWorker {
   /// Waits until every posted job has run, then rethrows the first error a job threw (the
   /// jobs posted after a failed one are skipped: the maps they would update are suspect).
   void drain();
+  /// Waits until every posted job has run; an error stays for drain(). For destructors of
+  /// what the jobs refer to.
+  void wait() noexcept;
 
  private:
   void loop();

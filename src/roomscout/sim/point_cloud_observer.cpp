@@ -30,12 +30,7 @@ PointCloudObserver::PointCloudObserver(const WorldModel& world, const PointCloud
 }
 
 PointCloudObserver::~PointCloudObserver() {
-  // Jobs still queued refer to this observer.
-  if (worker_ == nullptr) return;
-  try {
-    worker_->drain();
-  } catch (...) {  // the episode that posted them has failed already
-  }
+  if (worker_ != nullptr) worker_->wait();  // jobs still queued refer to this observer
 }
 
 void PointCloudObserver::onStep(const EpisodeSnapshot& snapshot) {
