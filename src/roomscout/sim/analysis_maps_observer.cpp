@@ -29,7 +29,7 @@ AnalysisMapsObserver::AnalysisMapsObserver(AnalysisMapKind kind, const AnalysisM
     : kind_(kind),
       options_(options),
       rooms_(kind == AnalysisMapKind::kTopological ? rooms : nullptr),
-      worker_(worker),
+      worker_(worker != nullptr && worker->background() ? worker : nullptr),
       segmenter_(options.segmentation),
       builder_(options.topology) {
   options_.validate();
@@ -80,9 +80,8 @@ void AnalysisMapsObserver::update(const OccupancyGrid& grid) {
   changed_ = false;
   updated_once_ = true;
   // Rooms built on another thread are read once that thread has built them.
-  const auto background = [](const MapWorker* w) { return w != nullptr && w->background(); };
-  if (rooms_ != nullptr && background(rooms_->worker_) && rooms_->worker_ != worker_) rooms_->worker_->drain();
-  if (!background(worker_)) {
+  if (rooms_ != nullptr && rooms_->worker_ != nullptr && rooms_->worker_ != worker_) rooms_->worker_->drain();
+  if (worker_ == nullptr) {
     maps::stateImage(grid, states_);
     build(states_, grid.geometry(), nullptr);
     return;

@@ -71,7 +71,7 @@ class AnalysisMapsObserver final : public EpisodeObserver {
   AnalysisMapKind kind_;
   AnalysisMapsOptions options_;
   const AnalysisMapsObserver* rooms_;
-  MapWorker* worker_;
+  MapWorker* worker_;  ///< null unless it has a thread: a worker without one changes nothing
   RoomSegmenter segmenter_;
   TopologyBuilder builder_;
   SemanticMap semantic_;

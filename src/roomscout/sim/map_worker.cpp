@@ -36,10 +36,10 @@ void MapWorker::post(std::function<void()> job) {
 }
 
 void MapWorker::drain() {
+  wait();
   std::exception_ptr error;
   {
-    std::unique_lock lock(mutex_);
-    idle_.wait(lock, [this] { return jobs_.empty() && !running_job_; });
+    std::lock_guard lock(mutex_);
     error = std::exchange(error_, nullptr);
   }
   if (error) std::rethrow_exception(error);

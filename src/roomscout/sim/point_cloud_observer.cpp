@@ -21,7 +21,7 @@ std::vector<ParameterGroup> PointCloudObserverOptions::groups() {
 PointCloudObserver::PointCloudObserver(const WorldModel& world, const PointCloudObserverOptions& options,
                                        std::uint64_t seed, MapWorker* worker)
     : options_(options),
-      worker_(worker),
+      worker_(worker != nullptr && worker->background() ? worker : nullptr),
       columns_(std::make_unique<ColumnWorld>(world)),
       lidar_(*columns_, options.lidar, seed),
       keyframes_(options.keyframes),
@@ -39,7 +39,7 @@ void PointCloudObserver::onStep(const EpisodeSnapshot& snapshot) {
   ++scans_;
   // The keyframe rule needs only the pose, so revolutions that are not keyframes are not cast.
   if (!keyframes_.accept(snapshot.robot)) return;
-  if (worker_ != nullptr && worker_->background()) {
+  if (worker_ != nullptr) {
     worker_->post([this, pose = snapshot.robot] { insertScan(pose); });
   } else {
     insertScan(snapshot.robot);

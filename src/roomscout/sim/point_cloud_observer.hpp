@@ -57,7 +57,7 @@ class PointCloudObserver final : public EpisodeObserver {
   void insertScan(const Pose2& T_map_robot);
 
   PointCloudObserverOptions options_;
-  MapWorker* worker_;
+  MapWorker* worker_;  ///< null unless it has a thread: a worker without one changes nothing
   std::unique_ptr<ColumnWorld> columns_;
   LidarSimulator lidar_;
   KeyframeSelector keyframes_;
