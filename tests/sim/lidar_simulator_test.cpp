@@ -166,6 +166,18 @@ TEST(LidarSimulator, SameHitsAsThePlainCastInAFurnishedRoom) {
   expectSameAsReference(w, 3, 5);
 }
 
+TEST(LidarSimulator, SameHitsAsThePlainCastWithMoreKindsOfColumnThanItsTable) {
+  // 48 boxes of 48 different heights (plus walls, lintel, table, legs): more kinds of column
+  // than the caster's table holds, so the rarest ones are read from the columns themselves.
+  World w = furnishedRoom();
+  w.walls.push_back({{10, 4.5}, {10, 5.5}, 0.2, 2.0, 2.5});
+  for (int i = 0; i < 48; ++i) {
+    const double x = 1.0 + (i % 8) * 0.6, y = 1.0 + (i / 8) * 0.5, top = 0.3 + 0.04 * i;
+    w.furniture.push_back({"box", {{x, y}, {x + 0.2, y}, {x + 0.2, y + 0.2}, {x, y + 0.2}}, 0.1, top});
+  }
+  expectSameAsReference(w, 4, 11);
+}
+
 TEST(LidarSimulator, SameHitsAsThePlainCastInTheLargeOffice) {
   expectSameAsReference(io::loadBuiltinWorld("large_office"), 3, 9);
 }

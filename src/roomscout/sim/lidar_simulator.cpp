@@ -4,7 +4,9 @@
 #include <bit>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <numeric>
+#include <span>
 
 #include "roomscout/core/errors.hpp"
 
@@ -54,18 +56,47 @@ LidarSimulator::LidarSimulator(const ColumnWorld& world, const LidarOptions& opt
                                (options_.elevation_max_deg - options_.elevation_min_deg) * k / (options_.num_rings - 1);
     elevations_rad_.push_back(e * deg);
   }
-  // Chessboard distance of every raster cell to the nearest non-empty column (0: non-empty),
-  // capped at 255: two chamfer passes with unit weights are exact for this metric.
+  // Per raster cell: the kind of a non-empty column (kKinds - 1: read the column), or
+  // kClearBase - 1 plus the chessboard distance to the nearest non-empty column, capped at 255
+  // (two chamfer passes with unit weights are exact for this metric). The kinds are the most
+  // common span lists (a wall, a table top over its legs, a lintel): a ray that meets one
+  // reads its spans from kind_spans_, which stays in cache, instead of from the column.
   {
     const int w = world_.geometry().width(), h = world_.geometry().height();
-    clear_cells_.assign(world_.geometry().cellCount(), 255);
+    const std::size_t n_cells = world_.geometry().cellCount();
+    // A column's span list, ordered by its values (for counting equal lists).
+    using SpanList = std::span<const ZInterval>;
+    const auto less = [](const SpanList& a, const SpanList& b) {
+      return std::lexicographical_compare(a.begin(), a.end(), b.begin(), b.end(),
+                                          [](const ZInterval& p, const ZInterval& q) {
+                                            return p.z_min_m != q.z_min_m ? p.z_min_m < q.z_min_m : p.z_max_m < q.z_max_m;
+                                          });
+    };
+    std::map<SpanList, std::size_t, decltype(less)> counts(less);
+    for (std::size_t i = 0; i < n_cells; ++i) {
+      if (!world_.columnEmpty(i)) ++counts[world_.intervals(i)];
+    }
+    std::vector<std::pair<std::size_t, SpanList>> by_count;
+    for (const auto& [list, count] : counts) by_count.emplace_back(count, list);
+    std::stable_sort(by_count.begin(), by_count.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+    std::map<SpanList, std::uint8_t, decltype(less)> kind_of(less);
+    kind_offsets_.assign(1, 0);
+    for (std::size_t k = 0; k < by_count.size() && k + 1 < kKinds; ++k) {
+      kind_of[by_count[k].second] = static_cast<std::uint8_t>(k);
+      kind_spans_.insert(kind_spans_.end(), by_count[k].second.begin(), by_count[k].second.end());
+      kind_offsets_.push_back(static_cast<std::uint32_t>(kind_spans_.size()));
+    }
+    clear_cells_.assign(n_cells, 255);
     std::uint8_t* d = clear_cells_.data();
-    auto relax = [&](std::size_t i, std::size_t j) { d[i] = std::min<int>(d[i], d[j] + 1); };
+    auto relax = [&](std::size_t i, std::size_t j) {
+      d[i] = static_cast<std::uint8_t>(std::min<int>(d[i], std::max<int>(d[j], kClearBase - 1) + 1));
+    };
     for (int y = 0; y < h; ++y) {
       for (int x = 0; x < w; ++x) {
         const std::size_t i = static_cast<std::size_t>(y) * w + x;
         if (!world_.columnEmpty(i)) {
-          d[i] = 0;
+          const auto kind = kind_of.find(world_.intervals(i));
+          d[i] = kind != kind_of.end() ? kind->second : kReadColumn;
           continue;
         }
         if (x > 0) relax(i, i - 1);
@@ -79,6 +110,7 @@ LidarSimulator::LidarSimulator(const ColumnWorld& world, const LidarOptions& opt
     for (int y = h - 1; y >= 0; --y) {
       for (int x = w - 1; x >= 0; --x) {
         const std::size_t i = static_cast<std::size_t>(y) * w + x;
+        if (d[i] < kClearBase) continue;
         if (x + 1 < w) relax(i, i + 1);
         if (y + 1 < h) {
           relax(i, i + w);
@@ -187,7 +219,8 @@ void LidarSimulator::castColumn(const Eigen::Vector2d& origin_m, double z_m, dou
   constexpr double kSkipMargin_m = 1e-6;
   constexpr int kMinJumpClearance = 3;  // jump over squares of radius 2 and more
   for (;;) {
-    const int clear = clear_cells[cell];
+    const int code = clear_cells[cell];
+    const int clear = code - (kClearBase - 1);  // chessboard distance to a solid column (<= 0: solid)
     if (clear >= kMinJumpClearance) {
       // Every cell within clear - 1 of this one (chessboard distance) is empty: jump to the
       // step that leaves that square. The DDA parameters still advance by the same additions
@@ -233,9 +266,13 @@ void LidarSimulator::castColumn(const Eigen::Vector2d& origin_m, double z_m, dou
     const bool along_x = t_max_x < t_max_y;
     const double t_out = along_x ? t_max_x : t_max_y;
     const double t_out_m = t_out * res;
-    if (clear == 0) {
+    if (clear <= 0) {
       const double t_in_m = t_in * res;
-      const auto spans = world_.intervals(static_cast<std::size_t>(cell));
+      // A column of a common kind is read from the kinds' table (in cache), not the column.
+      const std::span<const ZInterval> spans =
+          code == kReadColumn ? world_.intervals(static_cast<std::size_t>(cell))
+                              : std::span<const ZInterval>(kind_spans_.data() + kind_offsets_[code],
+                                                           kind_spans_.data() + kind_offsets_[code + 1]);
       // Heights the active rings span in this cell (conservative: over [t_in_m, t_out_m]):
       // a cell whose spans all lie outside them (by a margin far above the rounding of the
       // heights compared, 1e-15 m, and far below any geometry) cannot give a hit.

@@ -3,8 +3,10 @@
 // elevations swept over 360 degrees, cast against the ColumnWorld with a 2D DDA per azimuth
 // column that all rings of that column share (they cross the same raster cells and differ
 // only in the height at which they cross them). The DDA jumps across squares of empty
-// columns and skips cells and rings whose heights cannot meet a solid span, with the same
-// arithmetic as a cell-by-cell walk, so the hits are bit for bit those of the plain walk.
+// columns, reads the spans of the common kinds of column (a wall, a table) from a small
+// table instead of the column, and skips cells and rings whose heights cannot meet a solid
+// span, with the same arithmetic as a cell-by-cell walk, so the hits are bit for bit those
+// of the plain walk.
 
 #include <cstdint>
 #include <optional>
@@ -94,9 +96,15 @@ class LidarSimulator {
   LidarOptions options_;
   std::vector<double> elevations_rad_;
   std::vector<double> cos_azimuth_, sin_azimuth_;  ///< per column, sensor frame
-  /// Per raster cell, the chessboard distance to the nearest non-empty column (0: this one is
-  /// not empty), capped at 255: the DDA tests emptiness here and jumps across empty squares.
+  /// Per raster cell: the kind of a non-empty column (an index into kind_offsets_, or
+  /// kReadColumn for a column of no listed kind), or kClearBase - 1 plus the chessboard
+  /// distance to the nearest non-empty column, capped at 255. The DDA reads a solid column's
+  /// spans from its kind without touching the column, and jumps across empty squares.
   std::vector<std::uint8_t> clear_cells_;
+  static constexpr int kKinds = 32;  ///< codes 0 .. kKinds - 2: kinds; kKinds - 1: kReadColumn
+  static constexpr std::uint8_t kReadColumn = kKinds - 1, kClearBase = kKinds;
+  std::vector<ZInterval> kind_spans_;        ///< the kinds' span lists, one after another
+  std::vector<std::uint32_t> kind_offsets_;  ///< kind k: kind_spans_[offsets[k] .. offsets[k + 1])
   std::mt19937_64 rng_;
 };
 
