@@ -5,9 +5,17 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cerrno>
 #include <stdexcept>
 #include <thread>
 #include <vector>
+
+#ifdef __linux__
+#include <sys/resource.h>
+#include <sys/syscall.h>
+#include <unistd.h>
+#endif
 
 namespace roomscout::sim {
 namespace {
@@ -76,6 +84,23 @@ TEST(MapWorker, WaitKeepsTheErrorForDrain) {
   EXPECT_THROW(worker.drain(), std::runtime_error);
   EXPECT_NO_THROW(worker.drain());
 }
+
+#ifdef __linux__
+TEST(MapWorker, RunsBelowThePriorityOfTheThreadThatMadeIt) {
+  const auto niceOfThisThread = [] {
+    errno = 0;
+    return getpriority(PRIO_PROCESS, static_cast<id_t>(syscall(SYS_gettid)));
+  };
+  const int caller = niceOfThisThread();
+  int worker_nice = caller;
+  MapWorker worker(true);
+  worker.post([&] { worker_nice = niceOfThisThread(); });
+  worker.drain();
+  // Higher nice, lower priority (unless the caller already sits at the lowest, 19).
+  EXPECT_EQ(worker_nice, std::min(19, caller + 5));
+  EXPECT_EQ(niceOfThisThread(), caller);  // the caller's own priority is untouched
+}
+#endif
 
 TEST(MapWorker, DestructorLetsQueuedJobsFinish) {
   int runs = 0;

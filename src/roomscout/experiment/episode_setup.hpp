@@ -27,9 +27,9 @@ struct RunSettings {
   io::PcdFormat pcd_format = io::PcdFormat::kBinaryCompressed;  ///< pointcloud.pcd encoding
   double pcd_precision_m =
       0.005;  ///< pointcloud.pcd coordinates rounded to multiples [m]; 0 = exact
-  bool background_maps = false;  ///< build the maps the strategy does not read (point cloud,
-                                 ///< skeleton, rooms unless it readsRooms()) on a second
-                                 ///< thread; the outputs are the same either way
+  bool background_maps = false;  ///< build the maps the strategy does not read (point cloud;
+                                 ///< skeleton and rooms unless it readsRooms()) on two
+                                 ///< background threads; the outputs are the same either way
   /// Throws OptionError naming the command-line option that is out of range.
   void validate() const;
 };

@@ -2,6 +2,12 @@
 
 #include <utility>
 
+#ifdef __linux__
+#include <sys/resource.h>
+#include <sys/syscall.h>
+#include <unistd.h>
+#endif
+
 namespace roomscout::sim {
 
 MapWorker::MapWorker(bool background) {
@@ -51,6 +57,12 @@ void MapWorker::wait() noexcept {
 }
 
 void MapWorker::loop() {
+#ifdef __linux__
+  // Below the episode's thread, which runs the robot and is the episode's critical path: when
+  // the workers and it want more cores than there are, the workers wait. (Raising a thread's
+  // nice value needs no privilege; if it fails, the thread keeps the normal priority.)
+  setpriority(PRIO_PROCESS, static_cast<id_t>(syscall(SYS_gettid)), kNiceIncrement);
+#endif
   std::unique_lock lock(mutex_);
   for (;;) {
     wake_.wait(lock, [this] { return stop_ || !jobs_.empty(); });

@@ -3,7 +3,9 @@
 // explores (the point cloud, the skeleton graph, and the rooms when the strategy ignores
 // them), as a robot runs its map builders as nodes beside its planner. Jobs run one at a time
 // in the order they were posted, so a map comes out the same as if every update had run at
-// once on the caller's thread; a worker made without a thread does exactly that.
+// once on the caller's thread; a worker made without a thread does exactly that. The thread
+// runs at a lower priority than the one that made it (Linux: nice + kNiceIncrement), so it
+// takes what the episode's thread leaves of the cores.
 
 #include <condition_variable>
 #include <deque>
@@ -35,6 +37,8 @@ class MapWorker {
   void wait() noexcept;
 
  private:
+  /// The worker thread's nice value above the default (lower priority, see loop()).
+  static constexpr int kNiceIncrement = 5;
   void loop();
 
   std::mutex mutex_;
