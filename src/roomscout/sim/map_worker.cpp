@@ -1,8 +1,12 @@
 #include "roomscout/sim/map_worker.hpp"
 
+#include <algorithm>
+#include <optional>
 #include <utility>
 
 #ifdef __linux__
+#include <cerrno>
+
 #include <sys/resource.h>
 #include <sys/syscall.h>
 #include <unistd.h>
@@ -10,8 +14,37 @@
 
 namespace roomscout::sim {
 
+namespace {
+
+/// The calling thread's nice value; none where it cannot be read (or off Linux).
+std::optional<int> niceOfThisThread() {
+#ifdef __linux__
+  errno = 0;
+  const int nice = getpriority(PRIO_PROCESS, static_cast<id_t>(syscall(SYS_gettid)));
+  if (nice != -1 || errno == 0) return nice;
+#endif
+  return std::nullopt;
+}
+
+/// Sets the calling thread's nice value (raising it needs no privilege); a failure leaves it.
+void setNiceOfThisThread([[maybe_unused]] int nice) {
+#ifdef __linux__
+  setpriority(PRIO_PROCESS, static_cast<id_t>(syscall(SYS_gettid)), nice);
+#endif
+}
+
+}  // namespace
+
 MapWorker::MapWorker(bool background) {
-  if (background) thread_ = std::thread([this] { loop(); });
+  if (!background) return;
+  // Below the thread that makes the worker (the episode's, which runs the robot and is the
+  // episode's critical path, perhaps itself under `nice`): when the workers and it want more
+  // cores than there are, the workers wait.
+  const std::optional<int> caller_nice = niceOfThisThread();
+  thread_ = std::thread([this, caller_nice] {
+    if (caller_nice) setNiceOfThisThread(std::min(19, *caller_nice + kNiceIncrement));
+    loop();
+  });
 }
 
 MapWorker::~MapWorker() {
@@ -57,12 +90,6 @@ void MapWorker::wait() noexcept {
 }
 
 void MapWorker::loop() {
-#ifdef __linux__
-  // Below the episode's thread, which runs the robot and is the episode's critical path: when
-  // the workers and it want more cores than there are, the workers wait. (Raising a thread's
-  // nice value needs no privilege; if it fails, the thread keeps the normal priority.)
-  setpriority(PRIO_PROCESS, static_cast<id_t>(syscall(SYS_gettid)), kNiceIncrement);
-#endif
   std::unique_lock lock(mutex_);
   for (;;) {
     wake_.wait(lock, [this] { return stop_ || !jobs_.empty(); });

@@ -37,7 +37,7 @@ class MapWorker {
   void wait() noexcept;
 
  private:
-  /// The worker thread's nice value above the default (lower priority, see loop()).
+  /// The worker thread's nice value above its maker's (lower priority, see the constructor).
   static constexpr int kNiceIncrement = 5;
   void loop();
 
