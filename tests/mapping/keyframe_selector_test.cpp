@@ -7,8 +7,10 @@
 namespace roomscout {
 namespace {
 
-TEST(KeyframeSelector, LioSamRuleByDefault) {
-  KeyframeSelector k;
+TEST(KeyframeSelector, LioSamRuleWithoutTheTurnMargin) {
+  KeyframeOptions o;
+  o.turn_min_move_m = 0.0;
+  KeyframeSelector k(o);
   EXPECT_TRUE(k.accept({0.0, 0.0, 0.0}));    // the first scan
   EXPECT_FALSE(k.accept({0.5, 0.0, 0.1}));   // 0.5 m, 0.1 rad
   EXPECT_FALSE(k.accept({0.99, 0.0, 0.19}));
@@ -18,7 +20,19 @@ TEST(KeyframeSelector, LioSamRuleByDefault) {
   EXPECT_TRUE(k.accept({1.0, 0.0, M_PI - 0.05}));
   EXPECT_TRUE(k.accept({1.0, 0.0, -M_PI + 0.2}));  // 0.25 rad across the wrap
   EXPECT_EQ(k.keyframes(), 5);
-  EXPECT_NE(k.options().describe().find("1 m or 0.2 rad"), std::string::npos);
+  EXPECT_EQ(k.options().describe(), "keyframes: every 1 m or 0.2 rad (LIO-SAM rule)");
+}
+
+TEST(KeyframeSelector, ATurnOnTheSpotMakesNoKeyframeByDefault) {
+  KeyframeSelector k;
+  EXPECT_TRUE(k.accept({0.0, 0.0, 0.0}));
+  for (int i = 1; i <= 30; ++i) EXPECT_FALSE(k.accept({0.0, 0.0, 0.2 * i})) << i;  // a full turn and more
+  EXPECT_FALSE(k.accept({0.015, 0.0, 1.0}));  // 1.5 cm and turned: still the same spot
+  EXPECT_TRUE(k.accept({0.02, 0.0, 1.0}));    // 2 cm and turned 1 rad
+  EXPECT_FALSE(k.accept({0.05, 0.0, 1.1}));   // 3 cm but only 0.1 rad
+  EXPECT_TRUE(k.accept({1.02, 0.0, 1.0}));    // 1 m, no turn
+  EXPECT_EQ(k.keyframes(), 3);
+  EXPECT_NE(k.options().describe().find("no turns on the spot"), std::string::npos);
 }
 
 TEST(KeyframeSelector, EveryScan) {
@@ -32,6 +46,11 @@ TEST(KeyframeSelector, EveryScan) {
 TEST(KeyframeSelector, RejectsBadOptions) {
   KeyframeOptions o;
   o.distance_m = 0.0;
+  EXPECT_THROW(KeyframeSelector{o}, OptionError);
+  o = {};
+  o.turn_min_move_m = -0.1;
+  EXPECT_THROW(KeyframeSelector{o}, OptionError);
+  o.turn_min_move_m = 1.0;  // not below distance_m
   EXPECT_THROW(KeyframeSelector{o}, OptionError);
 }
 

@@ -10,6 +10,8 @@ namespace roomscout {
 void KeyframeOptions::validate() const {
   if (!(distance_m > 0.0)) throw OptionError("keyframes.distance_m must be > 0");
   if (!(angle_rad > 0.0)) throw OptionError("keyframes.angle_rad must be > 0");
+  if (!(turn_min_move_m >= 0.0 && turn_min_move_m < distance_m))
+    throw OptionError("keyframes.turn_min_move_m must be >= 0 and below keyframes.distance_m");
 }
 
 std::vector<ParameterRef> KeyframeOptions::parameters() {
@@ -17,13 +19,19 @@ std::vector<ParameterRef> KeyframeOptions::parameters() {
       {"every_scan", &every_scan, "insert every scan instead of keyframes only"},
       {"distance_m", &distance_m, "translation that makes a new keyframe [m]"},
       {"angle_rad", &angle_rad, "rotation that makes a new keyframe [rad]"},
+      {"turn_min_move_m", &turn_min_move_m, "translation a rotation keyframe also needs [m]; 0: LIO-SAM's rule"},
   };
 }
 
 std::string KeyframeOptions::describe() const {
   if (every_scan) return "keyframes: every scan";
   char buf[128];
-  std::snprintf(buf, sizeof buf, "keyframes: every %g m or %g rad (LIO-SAM rule)", distance_m, angle_rad);
+  if (turn_min_move_m == 0.0) {
+    std::snprintf(buf, sizeof buf, "keyframes: every %g m or %g rad (LIO-SAM rule)", distance_m, angle_rad);
+  } else {
+    std::snprintf(buf, sizeof buf, "keyframes: every %g m, or %g rad after %g m (LIO-SAM rule, no turns on the spot)",
+                  distance_m, angle_rad, turn_min_move_m);
+  }
   return buf;
 }
 
@@ -34,7 +42,7 @@ bool KeyframeSelector::accept(const Pose2& T_map_robot) {
   if (!key) {
     const double moved = (T_map_robot.position() - last_->position()).norm();
     const double turned = std::abs(wrapAngle(T_map_robot.yaw_rad - last_->yaw_rad));
-    key = moved >= options_.distance_m || turned >= options_.angle_rad;
+    key = moved >= options_.distance_m || (turned >= options_.angle_rad && moved >= options_.turn_min_move_m);
   }
   if (key) {
     last_ = T_map_robot;
