@@ -137,6 +137,40 @@ TEST(SemanticExplorerTest, KeepsItsGoalUntilTheGoalsSquareIsExplored) {
   EXPECT_TRUE(w.grid.isUnknown(g.index(g.cellOf(next.goal_m))));
 }
 
+TEST(SemanticExplorerTest, DropsAGoalOnceTheWallBehindItIsSeen) {
+  // The goal's square still holds unknown space, but behind a wall seen since: the outside of
+  // a room corner. Whether the strategy keeps the goal then.
+  auto keepsTheGoal = [](double min_frontier_m) {
+    TwoRoomGrid w;
+    SemanticExplorerOptions o;
+    o.replan_period_s = 100.0;  // no periodic switch: only the goal's own state matters here
+    o.min_frontier_m = min_frontier_m;
+    SemanticExplorer s(5, o);
+    const Pose2 robot{2.0, 1.0, 0.0};
+    s.decide({w.grid, w.costmap, robot, 0.0, &w.semantic});
+    const Decision first = s.decide({w.grid, w.costmap, robot, 2.0, &w.semantic});
+    EXPECT_EQ(first.status, Decision::Status::kGoal);
+    // Known free up to 0.25 m beyond the goal, then a wall, over the goal's square and 1.5 m
+    // either side of it; unknown beyond the wall (0.7 m deep in the square: more than
+    // min_unknown_m2), and no free cell of the square next to unknown space.
+    const GridGeometry& g = w.grid.geometry();
+    const Cell c = g.cellOf(first.goal_m);
+    const int r = static_cast<int>(std::lround((o.gain_half_side_m + 1.5) / g.resolution_m()));
+    for (int y = 0; y <= c.y + 6; ++y) {
+      for (int x = std::max(0, c.x - r); x <= std::min(g.width() - 1, c.x + r); ++x) {
+        w.grid.setState(g.index(Cell{x, y}), y == c.y + 6 ? CellState::kOccupied : CellState::kFree);
+      }
+    }
+    w.costmap.update(w.grid);
+    const Decision next = s.decide({w.grid, w.costmap, robot, 2.5, &w.semantic});
+    EXPECT_EQ(next.status, Decision::Status::kGoal);
+    return (next.goal_m - first.goal_m).norm() < 1e-9;
+  };
+  EXPECT_FALSE(keepsTheGoal(SemanticExplorerOptions{}.min_frontier_m));
+  // Counting unknown area only, the square is not explored yet.
+  EXPECT_TRUE(keepsTheGoal(0.0));
+}
+
 /// Two known rooms (10 x 5 m, x < 5 m is room 1) and, in room 2, a 1.5 x 1.5 m block whose
 /// north, east and south faces were seen (occupied) but whose west face and interior never were:
 /// the unknown inside of a cupboard whose front the laser only grazed. Nothing else is unknown.

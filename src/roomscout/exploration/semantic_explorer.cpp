@@ -21,6 +21,7 @@ void SemanticExplorerOptions::validate() const {
   if (!positive(gain_half_side_m)) throw OptionError("semantic.gain_half_side_m must be > 0");
   if (!finiteAtLeast(min_unknown_m2, 0.0)) throw OptionError("semantic.min_unknown_m2 must be >= 0");
   if (!finiteAtLeast(pocket_area_m2, 0.0)) throw OptionError("semantic.pocket_area_m2 must be >= 0");
+  if (!finiteAtLeast(min_frontier_m, 0.0)) throw OptionError("semantic.min_frontier_m must be >= 0");
   if (!positive(eta_m)) throw OptionError("semantic.eta_m must be > 0");
   if (!positive(iterations_per_s)) throw OptionError("semantic.iterations_per_s must be > 0");
   if (!finiteAtLeast(replan_period_s, 0.0)) throw OptionError("semantic.replan_period_s must be >= 0");
@@ -44,6 +45,7 @@ std::vector<ParameterRef> SemanticExplorerOptions::parameters() {
       {"room_reward", &room_reward, "A: added to points in the current room, subtracted elsewhere"},
       {"gain_half_side_m", &gain_half_side_m, "half-side of the square G is measured in [m]"},
       {"min_unknown_m2", &min_unknown_m2, "points with less unknown area in G's square are not goals [m^2]"},
+      {"min_frontier_m", &min_frontier_m, "squares with less frontier (free cells next to unknown x cell size) are explored; 0 = off [m]"},
       {"pocket_area_m2", &pocket_area_m2, "points opening onto less unknown, non-lethal area count as slivers; 0 = off [m^2]"},
       {"geodesic_cost", &geodesic_cost, "C is the path length through the costmap instead of the Euclidean distance"},
       {"eta_m", &eta_m, "tree steering step [m]"},
@@ -80,27 +82,44 @@ constexpr int kBlock = 2;
 /// differ between standard libraries, and runs must not).
 double unit(std::mt19937_64& rng) { return static_cast<double>(rng() >> 11) * 0x1.0p-53; }
 
-/// Unknown and occupied areas [m^2] in the square of half-side `half_m` centred on `p`'s cell.
+/// Unknown and occupied areas [m^2] in the square of half-side `half_m` centred on `p`'s cell,
+/// and its frontier cells (free, with an unknown 4-neighbour; the grid's border cells are not
+/// counted).
 struct SquareAreas {
   double unknown_m2 = 0.0;
   double occupied_m2 = 0.0;
+  int frontier_cells = 0;
 };
 
 SquareAreas squareAreas(const OccupancyGrid& grid, const Vec2& p, double half_m) {
   const GridGeometry& g = grid.geometry();
   const Cell c = g.cellOf(p);
   const int r = static_cast<int>(std::lround(half_m / g.resolution_m()));
-  int unknown = 0, occupied = 0;
+  const int w = g.width();
+  int unknown = 0, occupied = 0, frontier = 0;
   for (int y = std::max(0, c.y - r); y <= std::min(g.height() - 1, c.y + r); ++y) {
-    const std::size_t row = static_cast<std::size_t>(y) * g.width();
-    for (int x = std::max(0, c.x - r); x <= std::min(g.width() - 1, c.x + r); ++x) {
-      const CellState s = grid.state(row + x);
+    const std::size_t row = static_cast<std::size_t>(y) * w;
+    const bool inner_row = y > 0 && y + 1 < g.height();
+    for (int x = std::max(0, c.x - r); x <= std::min(w - 1, c.x + r); ++x) {
+      const std::size_t i = row + x;
+      const CellState s = grid.state(i);
       unknown += s == CellState::kUnknown;
       occupied += s == CellState::kOccupied;
+      if (s == CellState::kFree && inner_row && x > 0 && x + 1 < w) {
+        frontier += grid.isUnknown(i - 1) || grid.isUnknown(i + 1) || grid.isUnknown(i - w) ||
+                    grid.isUnknown(i + w);
+      }
     }
   }
   const double cell_m2 = g.resolution_m() * g.resolution_m();
-  return {unknown * cell_m2, occupied * cell_m2};
+  return {unknown * cell_m2, occupied * cell_m2, frontier};
+}
+
+/// Whether a square holds too little to see to be worth a trip: less than min_unknown_m2 of
+/// unknown space, or less than min_frontier_m of frontier (its unknown space lies behind walls
+/// already seen, e.g. outside a room corner, and cannot be seen from there).
+bool exhausted(const SquareAreas& a, const SemanticExplorerOptions& o, double resolution_m) {
+  return a.unknown_m2 < o.min_unknown_m2 || a.frontier_cells < std::lround(o.min_frontier_m / resolution_m);
 }
 
 }  // namespace
@@ -141,7 +160,7 @@ bool SemanticExplorer::goalExplored(const ExplorationInput& input) const {
   const GridGeometry& g = input.grid.geometry();
   const Cell c = g.cellOf(goal_m_);
   if (!g.contains(c) || input.costmap.isLethal(g.index(c))) return true;
-  return squareAreas(input.grid, goal_m_, options_.gain_half_side_m).unknown_m2 < options_.min_unknown_m2;
+  return exhausted(squareAreas(input.grid, goal_m_, options_.gain_half_side_m), options_, g.resolution_m());
 }
 
 int SemanticExplorer::roomOf(const ExplorationInput& input, const Vec2& p) const {
@@ -437,13 +456,14 @@ Decision SemanticExplorer::decide(const ExplorationInput& input) {
   if (endTest(input)) return Decision::done();
 
   // The goal is kept until its square is explored (less than min_unknown_m2 of unknown space
-  // left), not merely until its own cell is seen: the laser's edge recedes as the robot
+  // or min_frontier_m of frontier left), not merely until its own cell is seen: the laser's edge recedes as the robot
   // drives, so the first unknown cell of an edge is seen long before the space behind it.
   if (has_goal_ && goalExplored(input)) has_goal_ = false;
   const bool periodic = input.time_s - last_eval_s_ >= options_.replan_period_s - 1e-9;
   if (!points_.empty() && (!has_goal_ || periodic)) {
     last_eval_s_ = input.time_s;
-    // Slivers (less than min_unknown_m2 of unknown space in the square) are not worth the trip
+    // Slivers (less than min_unknown_m2 of unknown space or min_frontier_m of frontier in the
+    // square, or a pocket) are not worth the trip
     // while anything else is left. When nothing else was found while idling for idle_end_s,
     // rather than end short of the last percent, the robot takes the best sliver in the current
     // room that it has not come within observed_radius_m of (the corners of a room the laser saw
@@ -465,7 +485,7 @@ Decision SemanticExplorer::decide(const ExplorationInput& input) {
       const std::size_t cell = g.index(g.cellOf(points_[i].p));
       const SquareAreas a = squareAreas(input.grid, points_[i].p, options_.gain_half_side_m);
       const bool sliver =
-          a.unknown_m2 < options_.min_unknown_m2 || (options_.pocket_area_m2 > 0.0 && pockets_[cell]);
+          exhausted(a, options_, g.resolution_m()) || (options_.pocket_area_m2 > 0.0 && pockets_[cell]);
       if (sliver && (!slivers_wanted || visited_[cell])) continue;
       const bool inside = room_ != 0 && roomOf(input, points_[i].anchor) == room_;
       if (sliver && !inside) continue;

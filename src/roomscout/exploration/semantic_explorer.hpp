@@ -31,14 +31,20 @@
 // label_search_m.
 // The best S among the points that are no slivers becomes the goal (slivers only at the very
 // end, see decide()). A sliver has less than min_unknown_m2 of unknown space in its square, or
+// less than min_frontier_m of frontier there (free cells next to unknown, times the cell size:
+// once a room corner's outer walls are seen, the unknown space behind them still fills the
+// square but cannot be seen from there; a goal trace found about a quarter of small_house's
+// length driven to such corners, and without the test L98 was 11 / 3 / 8 % longer in the three
+// built-in worlds, 10 % on the HouseExpo plans; docs/semantic_tuning.md, session 15), or
 // opens onto a pocket: less than pocket_area_m2 of unknown, non-lethal space 4-connected to it
 // within the known map (markUnknownPockets, as in the rrt end tests), mostly the inside of a
 // cupboard or a wall whose face the laser only grazed, which no viewpoint shows. With pockets
 // as goals the robot crossed the building for them (room revisits -14 / -21 / -28 % and T_done
 // -5 / -13 / -16 % without; the price: a shadowed wedge of floor that small is left too, final
 // rate 99.5 / 99.8 / 99.5 % instead of 99.9 / 99.9 / 99.8 %; docs/semantic_tuning.md, session
-// 10). The goal is re-evaluated when it is reached or fails, when its square is explored (less
-// than min_unknown_m2 of unknown space left) or its point lies in the inflation, and every
+// 10). The goal is re-evaluated when it is reached or fails, when its square is explored (it
+// would be a sliver now: too little unknown space or frontier left) or its point lies in the
+// inflation, and every
 // replan_period_s while driving, when another point beats the goal's own score by
 // switch_margin. The goal is not dropped as soon as its own cell is seen: the laser's edge
 // recedes in front of the robot, and choosing afresh every time it does made the robot swing
@@ -78,6 +84,9 @@ struct SemanticExplorerOptions {
                                        ///< goals only when nothing else was found for
                                        ///< idle_end_s (slivers along walls, furniture faces,
                                        ///< far room corners)
+  double min_frontier_m = 0.5;         ///< ... or less frontier (free cells next to unknown, x
+                                       ///< the cell size) in the square: its unknown space lies
+                                       ///< behind walls seen already; 0 = off [m]
   double pocket_area_m2 = 2.0;         ///< points opening onto less unknown, non-lethal area
                                        ///< (4-connected) count as slivers; 0 = off [m^2]
   bool geodesic_cost = true;           ///< C = path length through the costmap, not Euclidean
