@@ -216,5 +216,35 @@ TEST(ImprovedRrtTest, PreviousGoalCopiesAreCountedNotStored) {
   EXPECT_LT(rrt.distinctFrontierCount(), rrt.frontierCount() / 4);
 }
 
+// A 15 x 3 m corridor, unknown at both ends: 2 m of it at the west end, 0.5 m at the east end
+// with a wall seen behind it, so the west points' squares hold far more unknown space and the
+// first goal lies there. Then most of the west end turns out to be wall, leaving a 0.35 m strip
+// of unknown cells before it: the west points (the strip's cells, still unknown) now score below
+// the east ones, and once the goal is reached the next lies east. Gains are cached between
+// calls, so this holds only if every point whose square changed had its gain recomputed.
+TEST(ImprovedRrtTest, RescoresPointsWhoseSquareChanged) {
+  OccupancyGrid grid(GridGeometry({0.0, 0.0}, 0.05, 300, 60));
+  fill(grid, 0, 0, 40, 60, CellState::kUnknown);
+  fill(grid, 40, 0, 260, 60, CellState::kFree);
+  fill(grid, 260, 0, 270, 60, CellState::kUnknown);
+  fill(grid, 270, 0, 300, 60, CellState::kOccupied);
+  Costmap costmap;
+  costmap.update(grid);
+  ImprovedRrt rrt(7);
+  const Pose2 robot(7.5, 1.5, 0.0);
+  Decision d;
+  double t = 0.0;
+  for (; t <= 20.0; t += 0.25) d = rrt.decide(ExplorationInput{grid, costmap, robot, t});
+  ASSERT_EQ(d.status, Decision::Status::kGoal);
+  ASSERT_LT(d.goal_m.x(), 2.0) << "first goal at the west end";
+
+  fill(grid, 0, 0, 33, 60, CellState::kOccupied);
+  costmap.update(grid);
+  rrt.onGoalReached(d.goal_m);
+  for (; t <= 40.0; t += 0.25) d = rrt.decide(ExplorationInput{grid, costmap, robot, t});
+  ASSERT_EQ(d.status, Decision::Status::kGoal);
+  EXPECT_GT(d.goal_m.x(), 12.9) << "goal (" << d.goal_m.x() << ", " << d.goal_m.y() << ")";
+}
+
 }  // namespace
 }  // namespace roomscout

@@ -66,11 +66,11 @@ std::vector<ParameterRef> ImprovedRrtOptions::parameters() {
   };
 }
 
-/// Summed-area table of (unknown - occupied) over a grid, so that SMMR-Explore's
-/// informationRectangleGain costs O(1) per point. Kept up to date between builds: only the
-/// rows whose cell states changed since the last build get their row sums recomputed, and the
-/// table is re-accumulated from the first such row down (a vector add per row), so a build
-/// costs a scan for changed rows instead of a serial pass over every cell.
+/// Row prefix sums of (unknown - occupied) over a grid, for SMMR-Explore's
+/// informationRectangleGain: a square's sum costs two lookups per row. A build brings only the
+/// rows whose cell states changed since the last build up to date and records the box of cells
+/// that changed, so that a point's cached gain is recomputed only when its square meets that box
+/// (the sums are integers: a cached gain is exactly the one a full recomputation would give).
 class GainTable {
  public:
   void build(const OccupancyGrid& grid) {
@@ -83,15 +83,23 @@ class GainTable {
       const std::size_t cells = static_cast<std::size_t>(w_) * h_;
       snapshot_.assign(states, states + cells);
       row_sum_.assign(static_cast<std::size_t>(w_ + 1) * h_, 0);
-      sum_.assign(static_cast<std::size_t>(w_ + 1) * (h_ + 1), 0);
+      changed_x0_ = 0, changed_x1_ = w_ - 1, changed_y0_ = 0, changed_y1_ = h_ - 1;
+    } else {
+      changed_x0_ = w_, changed_x1_ = -1, changed_y0_ = h_, changed_y1_ = -1;
     }
-    int first = resized ? 0 : h_;
     for (int y = 0; y < h_; ++y) {
       const std::size_t row = static_cast<std::size_t>(y) * w_;
       if (!resized) {
-        if (std::memcmp(snapshot_.data() + row, states + row, static_cast<std::size_t>(w_)) == 0) continue;
+        const std::uint8_t* old_row = snapshot_.data() + row;
+        if (std::memcmp(old_row, states + row, static_cast<std::size_t>(w_)) == 0) continue;
+        int x0 = 0, x1 = w_ - 1;
+        while (old_row[x0] == states[row + x0]) ++x0;
+        while (old_row[x1] == states[row + x1]) --x1;
+        changed_x0_ = std::min(changed_x0_, x0);
+        changed_x1_ = std::max(changed_x1_, x1);
+        changed_y0_ = std::min(changed_y0_, y);
+        changed_y1_ = y;
         std::memcpy(snapshot_.data() + row, states + row, static_cast<std::size_t>(w_));
-        first = std::min(first, y);
       }
       // Unknown +1, free 0, occupied -1: one minus the state byte.
       int* out = &row_sum_[static_cast<std::size_t>(y) * (w_ + 1)];
@@ -99,13 +107,10 @@ class GainTable {
       out[0] = 0;
       for (int x = 0; x < w_; ++x) out[x + 1] = run += 1 - static_cast<int>(states[row + x]);
     }
-    const std::size_t stride = static_cast<std::size_t>(w_) + 1;
-    for (int y = first; y < h_; ++y) {
-      const int* above = &sum_[y * stride];
-      const int* rs = &row_sum_[y * stride];
-      int* out = &sum_[(y + 1) * stride];
-      std::transform(above, above + stride, rs, out, std::plus<>());
-    }
+  }
+  /// Whether any cell of [x0, x1) x [y0, y1) changed in the last build.
+  bool changed(int x0, int y0, int x1, int y1) const {
+    return x0 <= changed_x1_ && x1 > changed_x0_ && y0 <= changed_y1_ && y1 > changed_y0_;
   }
   /// Sum over cells [x0, x1) x [y0, y1), clipped to the grid.
   int sum(int x0, int y0, int x1, int y1) const {
@@ -114,15 +119,20 @@ class GainTable {
     y0 = std::clamp(y0, 0, h_);
     y1 = std::clamp(y1, 0, h_);
     if (x0 >= x1 || y0 >= y1) return 0;
-    return cat(x1, y1) - cat(x0, y1) - cat(x1, y0) + cat(x0, y0);
+    const std::size_t stride = static_cast<std::size_t>(w_) + 1;
+    int total = 0;
+    for (int y = y0; y < y1; ++y) {
+      const int* rs = &row_sum_[y * stride];
+      total += rs[x1] - rs[x0];
+    }
+    return total;
   }
 
  private:
-  int cat(int x, int y) const { return sum_[static_cast<std::size_t>(y) * (w_ + 1) + x]; }
   int w_ = -1, h_ = -1;
   std::vector<std::uint8_t> snapshot_;  ///< cell states at the last build
   std::vector<int> row_sum_;            ///< per row: prefix sums of its cell values
-  std::vector<int> sum_;
+  int changed_x0_ = 0, changed_x1_ = -1, changed_y0_ = 0, changed_y1_ = -1;  ///< inclusive; empty
 };
 
 /// SMMR-Explore's informationRectangleGain: (unknown - occupied) area [m^2] in the square of
@@ -130,9 +140,18 @@ class GainTable {
 /// truncated), as the original's loops; cells outside the grid count as nothing.
 namespace {
 
-double rectangleGain(const GainTable& table, const GridGeometry& g, const Cell& c, double half_m) {
+struct GainSquare {
+  int x0, y0, x1, y1;
+};
+
+GainSquare gainSquare(const GridGeometry& g, const Cell& c, double half_m) {
   const int r = static_cast<int>(half_m / g.resolution_m());
-  return table.sum(c.x - r, c.y - r, c.x + r, c.y + r + 1) * g.resolution_m() * g.resolution_m();
+  return {c.x - r, c.y - r, c.x + r, c.y + r + 1};
+}
+
+double rectangleGain(const GainTable& table, const GridGeometry& g, const Cell& c, double half_m) {
+  const GainSquare q = gainSquare(g, c, half_m);
+  return table.sum(q.x0, q.y0, q.x1, q.y1) * g.resolution_m() * g.resolution_m();
 }
 
 }  // namespace
@@ -241,6 +260,7 @@ ImprovedRrt::Step ImprovedRrt::iterate(const ExplorationInput& input, const RrtT
       previous_index_ = static_cast<long>(frontiers_.size());
       frontiers_.push_back(previous_goal_);
       frontiers_.back().copies = 0;
+      frontiers_.back().gain_valid = false;  // the copy missed the table's builds since
     }
     ++frontiers_[static_cast<std::size_t>(previous_index_)].copies;
     ++held_;
@@ -271,14 +291,19 @@ void ImprovedRrt::select(const ExplorationInput& input) {
   const Vec2 robot = input.robot.position();
   double best_score = -500.0;
   const Point* best = nullptr;
+  if (table_call_ != call_) {
+    // The grid changed since the last build (if at all) only inside the table's changed box.
+    gain_table_->build(input.grid);
+    table_call_ = call_;
+    for (Point& f : frontiers_) {
+      const GainSquare q = gainSquare(g, f.cell, options_.info_radius_m);
+      if (f.gain_valid && gain_table_->changed(q.x0, q.y0, q.x1, q.y1)) f.gain_valid = false;
+    }
+  }
   for (Point& f : frontiers_) {
-    if (f.gain_call != call_) {
-      if (table_call_ != call_) {
-        gain_table_->build(input.grid);
-        table_call_ = call_;
-      }
+    if (!f.gain_valid) {
       f.gain_m2 = rectangleGain(*gain_table_, g, f.cell, options_.info_radius_m);
-      f.gain_call = call_;
+      f.gain_valid = true;
     }
     double gain = f.gain_m2;
     const double d = (f.p - robot).norm();

@@ -124,8 +124,8 @@ class ImprovedRrt final : public ExplorationStrategy {
     Vec2 p = Vec2::Zero();
     long copies = 1;        ///< times the original's list holds this point: the previous goal
                             ///< is appended again every iteration while it stays unknown
-    double gain_m2 = 0.0;   ///< G cached for the call `gain_call`
-    std::uint64_t gain_call = 0;
+    double gain_m2 = 0.0;     ///< G, cached while no cell of its square changes
+    bool gain_valid = false;  ///< gain_m2 holds G for the grid of the table's last build
     Cell cell{};            ///< cell of p; index: its row-major index, -1 outside the grid
     long index = -1;
     long neighbours[4] = {-1, -1, -1, -1};  ///< cells of p + (res,0), (0,res), (-res,0), (0,-res)
@@ -159,7 +159,7 @@ class ImprovedRrt final : public ExplorationStrategy {
   long previous_index_ = -1;           ///< entry of previous_goal_.p in frontiers_, if any
   std::vector<std::uint8_t> visited_;  ///< cells the robot came within observed_radius_m of
   std::vector<Vec2> blacklist_;
-  std::unique_ptr<GainTable> gain_table_;  ///< built at most once per call, when needed
+  std::unique_ptr<GainTable> gain_table_;  ///< built at most once per call, at its first selection
   std::uint64_t table_call_ = 0;
   bool has_previous_ = false;
   Point previous_goal_;                ///< the goal last selected, with its cells
