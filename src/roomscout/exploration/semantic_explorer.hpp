@@ -35,7 +35,7 @@
 // once a room corner's outer walls are seen, the unknown space behind them still fills the
 // square but cannot be seen from there; a goal trace found about a quarter of small_house's
 // length driven to such corners, and without the test L98 was 11 / 3 / 8 % longer in the three
-// built-in worlds, 10 % on the HouseExpo plans; docs/semantic_tuning.md, session 15), or
+// built-in worlds, 9 % on the HouseExpo plans; docs/semantic_tuning.md, session 15), or
 // opens onto a pocket: less than pocket_area_m2 of unknown, non-lethal space 4-connected to it
 // within the known map (markUnknownPockets, as in the rrt end tests), mostly the inside of a
 // cupboard or a wall whose face the laser only grazed, which no viewpoint shows. With pockets
