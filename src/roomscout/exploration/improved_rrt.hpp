@@ -124,7 +124,7 @@ class ImprovedRrt final : public ExplorationStrategy {
     Vec2 p = Vec2::Zero();
     long copies = 1;        ///< times the original's list holds this point: the previous goal
                             ///< is appended again every iteration while it stays unknown
-    double gain_m2 = 0.0;     ///< G, cached while no cell of its square changes
+    double gain_m2 = 0.0;   ///< G, cached while no cell of its square changes
     bool gain_valid = false;  ///< gain_m2 holds G for the grid of the table's last build
     Cell cell{};            ///< cell of p; index: its row-major index, -1 outside the grid
     long index = -1;

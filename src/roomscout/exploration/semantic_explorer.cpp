@@ -84,42 +84,56 @@ double unit(std::mt19937_64& rng) { return static_cast<double>(rng() >> 11) * 0x
 
 /// Unknown and occupied areas [m^2] in the square of half-side `half_m` centred on `p`'s cell,
 /// and its frontier cells (free, with an unknown 4-neighbour; the grid's border cells are not
-/// counted).
+/// counted) up to `frontier_cap`: only whether a square holds that many matters.
 struct SquareAreas {
   double unknown_m2 = 0.0;
   double occupied_m2 = 0.0;
   int frontier_cells = 0;
 };
 
-SquareAreas squareAreas(const OccupancyGrid& grid, const Vec2& p, double half_m) {
+SquareAreas squareAreas(const OccupancyGrid& grid, const Vec2& p, double half_m,
+                        int frontier_cap = 0) {
   const GridGeometry& g = grid.geometry();
   const Cell c = g.cellOf(p);
   const int r = static_cast<int>(std::lround(half_m / g.resolution_m()));
   const int w = g.width();
+  const int x0 = std::max(0, c.x - r), x1 = std::min(w - 1, c.x + r);
+  const int y0 = std::max(0, c.y - r), y1 = std::min(g.height() - 1, c.y + r);
   int unknown = 0, occupied = 0, frontier = 0;
-  for (int y = std::max(0, c.y - r); y <= std::min(g.height() - 1, c.y + r); ++y) {
+  for (int y = y0; y <= y1; ++y) {
     const std::size_t row = static_cast<std::size_t>(y) * w;
-    const bool inner_row = y > 0 && y + 1 < g.height();
-    for (int x = std::max(0, c.x - r); x <= std::min(w - 1, c.x + r); ++x) {
-      const std::size_t i = row + x;
-      const CellState s = grid.state(i);
+    for (int x = x0; x <= x1; ++x) {
+      const CellState s = grid.state(row + x);
       unknown += s == CellState::kUnknown;
       occupied += s == CellState::kOccupied;
-      if (s == CellState::kFree && inner_row && x > 0 && x + 1 < w) {
-        frontier += grid.isUnknown(i - 1) || grid.isUnknown(i + 1) || grid.isUnknown(i - w) ||
-                    grid.isUnknown(i + w);
-      }
+    }
+  }
+  // Rows from the centre outwards: a frontier point's own frontier is near it, so a square
+  // with enough frontier is usually told after a few rows.
+  for (int k = 0; frontier < frontier_cap && k <= 2 * r; ++k) {
+    const int y = c.y + (k % 2 == 0 ? k / 2 : -(k + 1) / 2);
+    if (y < std::max(1, y0) || y > std::min(g.height() - 2, y1)) continue;
+    const std::size_t row = static_cast<std::size_t>(y) * w;
+    for (int x = std::max(1, x0); x <= std::min(w - 2, x1) && frontier < frontier_cap; ++x) {
+      const std::size_t i = row + x;
+      frontier += grid.isFree(i) && (grid.isUnknown(i - 1) || grid.isUnknown(i + 1) ||
+                                     grid.isUnknown(i - w) || grid.isUnknown(i + w));
     }
   }
   const double cell_m2 = g.resolution_m() * g.resolution_m();
   return {unknown * cell_m2, occupied * cell_m2, frontier};
 }
 
+/// The frontier cells a square must hold not to be exhausted.
+int frontierCellsWanted(const SemanticExplorerOptions& o, double resolution_m) {
+  return static_cast<int>(std::lround(o.min_frontier_m / resolution_m));
+}
+
 /// Whether a square holds too little to see to be worth a trip: less than min_unknown_m2 of
 /// unknown space, or less than min_frontier_m of frontier (its unknown space lies behind walls
 /// already seen, e.g. outside a room corner, and cannot be seen from there).
 bool exhausted(const SquareAreas& a, const SemanticExplorerOptions& o, double resolution_m) {
-  return a.unknown_m2 < o.min_unknown_m2 || a.frontier_cells < std::lround(o.min_frontier_m / resolution_m);
+  return a.unknown_m2 < o.min_unknown_m2 || a.frontier_cells < frontierCellsWanted(o, resolution_m);
 }
 
 }  // namespace
@@ -160,7 +174,9 @@ bool SemanticExplorer::goalExplored(const ExplorationInput& input) const {
   const GridGeometry& g = input.grid.geometry();
   const Cell c = g.cellOf(goal_m_);
   if (!g.contains(c) || input.costmap.isLethal(g.index(c))) return true;
-  return exhausted(squareAreas(input.grid, goal_m_, options_.gain_half_side_m), options_, g.resolution_m());
+  const SquareAreas a = squareAreas(input.grid, goal_m_, options_.gain_half_side_m,
+                                    frontierCellsWanted(options_, g.resolution_m()));
+  return exhausted(a, options_, g.resolution_m());
 }
 
 int SemanticExplorer::roomOf(const ExplorationInput& input, const Vec2& p) const {
@@ -456,20 +472,21 @@ Decision SemanticExplorer::decide(const ExplorationInput& input) {
   if (endTest(input)) return Decision::done();
 
   // The goal is kept until its square is explored (less than min_unknown_m2 of unknown space
-  // or min_frontier_m of frontier left), not merely until its own cell is seen: the laser's edge recedes as the robot
-  // drives, so the first unknown cell of an edge is seen long before the space behind it.
+  // or min_frontier_m of frontier left), not merely until its own cell is seen: the laser's
+  // edge recedes as the robot drives, so the first unknown cell of an edge is seen long before
+  // the space behind it.
   if (has_goal_ && goalExplored(input)) has_goal_ = false;
   const bool periodic = input.time_s - last_eval_s_ >= options_.replan_period_s - 1e-9;
   if (!points_.empty() && (!has_goal_ || periodic)) {
     last_eval_s_ = input.time_s;
     // Slivers (less than min_unknown_m2 of unknown space or min_frontier_m of frontier in the
-    // square, or a pocket) are not worth the trip
-    // while anything else is left. When nothing else was found while idling for idle_end_s,
-    // rather than end short of the last percent, the robot takes the best sliver in the current
-    // room that it has not come within observed_radius_m of (the corners of a room the laser saw
-    // from its middle, say), then the next, until none is left. Other rooms' slivers and those
-    // looked at from close by stay out, so that it does not tour the building's furniture faces
-    // at the end. A sliver goal's square is explored already, so it is chosen afresh each call.
+    // square, or a pocket) are not worth the trip while anything else is left. When nothing else
+    // was found while idling for idle_end_s, rather than end short of the last percent, the robot
+    // takes the best sliver in the current room that it has not come within observed_radius_m of
+    // (the corners of a room the laser saw from its middle, say), then the next, until none is
+    // left. Other rooms' slivers and those looked at from close by stay out, so that it does not
+    // tour the building's furniture faces at the end. A sliver goal's square is explored already,
+    // so it is chosen afresh each call.
     const bool slivers_wanted = !has_goal_ && (chasing_slivers_ || idle_);
     if (options_.pocket_area_m2 > 0.0) {
       std::vector<Cell> cells;
@@ -481,9 +498,11 @@ Decision SemanticExplorer::decide(const ExplorationInput& input) {
     // The points that may become the goal, with the score's part that does not depend on C.
     std::vector<Candidate>& cands = candidates_scored_;
     cands.clear();
+    const int frontier_wanted = frontierCellsWanted(options_, g.resolution_m());
     for (std::size_t i = 0; i < points_.size(); ++i) {
       const std::size_t cell = g.index(g.cellOf(points_[i].p));
-      const SquareAreas a = squareAreas(input.grid, points_[i].p, options_.gain_half_side_m);
+      const SquareAreas a =
+          squareAreas(input.grid, points_[i].p, options_.gain_half_side_m, frontier_wanted);
       const bool sliver =
           exhausted(a, options_, g.resolution_m()) || (options_.pocket_area_m2 > 0.0 && pockets_[cell]);
       if (sliver && (!slivers_wanted || visited_[cell])) continue;

@@ -44,10 +44,9 @@
 // rate 99.5 / 99.8 / 99.5 % instead of 99.9 / 99.9 / 99.8 %; docs/semantic_tuning.md, session
 // 10). The goal is re-evaluated when it is reached or fails, when its square is explored (it
 // would be a sliver now: too little unknown space or frontier left) or its point lies in the
-// inflation, and every
-// replan_period_s while driving, when another point beats the goal's own score by
-// switch_margin. The goal is not dropped as soon as its own cell is seen: the laser's edge
-// recedes in front of the robot, and choosing afresh every time it does made the robot swing
+// inflation, and every replan_period_s while driving, when another point beats the goal's own
+// score by switch_margin. The goal is not dropped as soon as its own cell is seen: the laser's
+// edge recedes in front of the robot, and choosing afresh every time it does made the robot swing
 // between points 3.5 m away in different directions (L98 -10 to -20 %, revisits about halved;
 // docs/semantic_tuning.md, fourth pass).
 //
