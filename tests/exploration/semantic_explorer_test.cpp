@@ -171,6 +171,76 @@ TEST(SemanticExplorerTest, DropsAGoalOnceTheWallBehindItIsSeen) {
   EXPECT_TRUE(keepsTheGoal(0.0));
 }
 
+/// A hallway with four rooms along it (10 x 6 m grid): room 1 is the hallway, y < 1.5 m and
+/// x < 9 m, running on into unknown space at x = 9 m; rooms 2-5, 2.25 m wide each, lie north
+/// of it for x < 9 m and 1.5 <= y < 4 m, unknown beyond y = 4 m, with a wall at x = 9 m. Only
+/// the labels part the rooms, so the hallway has four neighbouring rooms.
+struct HallwayGrid {
+  OccupancyGrid grid{GridGeometry({0.0, 0.0}, 0.05, 200, 120)};
+  Costmap costmap;
+  SemanticMap semantic;
+  HallwayGrid() {
+    const GridGeometry& g = grid.geometry();
+    cv::Mat labels(g.height(), g.width(), CV_32S, cv::Scalar(0));
+    for (int y = 0; y < g.height(); ++y) {
+      for (int x = 0; x < g.width(); ++x) {
+        const int label = x < 180 && y < 80 ? (y < 30 ? 1 : 2 + x / 45) : 0;
+        const bool wall = x == 180 && y >= 30;
+        grid.setState(g.index(Cell{x, y}), wall ? CellState::kOccupied
+                                           : label != 0 ? CellState::kFree : CellState::kUnknown);
+        labels.at<int>(y, x) = label;
+      }
+    }
+    costmap.update(grid);
+    semantic.update(g, labels, cv::Mat());
+  }
+};
+
+TEST(SemanticExplorerTest, InAHallwayTakesTheRoomBesideItInsteadOfTheHallwaysFarEnd) {
+  // Robot in the hallway at x = 2 m: the rooms north of it open 3.3 m away, the hallway's own
+  // frontier 7 m away. With the room reward the hallway's end wins (+A against -A); the hub
+  // rule drops the reward there, and a room beside the robot wins.
+  auto firstGoal = [](int hub_min_neighbours, bool& in_hub, bool& has_candidates) {
+    HallwayGrid w;
+    ASSERT_EQ(w.semantic.region(1)->neighbours.size(), 4u);
+    SemanticExplorerOptions o;
+    o.hub_min_neighbours = hub_min_neighbours;
+    o.iterations_per_s = 2000.0;
+    SemanticExplorer s(11, o);
+    const Pose2 robot{2.0, 0.75, 0.0};
+    s.decide({w.grid, w.costmap, robot, 0.0, &w.semantic});
+    const Decision d = s.decide({w.grid, w.costmap, robot, 20.0, &w.semantic});
+    EXPECT_EQ(s.currentRoom(), 1);
+    in_hub = s.inHub();
+    has_candidates = !s.semanticCandidates().empty();
+    ASSERT_EQ(d.status, Decision::Status::kGoal);
+    if (in_hub) {
+      EXPECT_DOUBLE_EQ(s.score(2.0, 3.0, true), s.score(2.0, 3.0, false));
+      EXPECT_GT(d.goal_m.y(), 3.9) << d.goal_m.transpose();  // a room's far side
+      EXPECT_LT(d.goal_m.x(), 4.5) << d.goal_m.transpose();  // room 2 or 3
+    } else {
+      EXPECT_GT(d.goal_m.x(), 8.9) << d.goal_m.transpose();  // the hallway's end
+      EXPECT_LT(d.goal_m.y(), 1.6) << d.goal_m.transpose();
+    }
+  };
+  bool in_hub = false, has_candidates = false;
+  firstGoal(SemanticExplorerOptions{}.hub_min_neighbours, in_hub, has_candidates);
+  EXPECT_TRUE(in_hub);
+  EXPECT_FALSE(has_candidates);  // no P_sem in a hub
+  firstGoal(0, in_hub, has_candidates);
+  EXPECT_FALSE(in_hub);
+  EXPECT_TRUE(has_candidates);
+  firstGoal(5, in_hub, has_candidates);  // four neighbours: no hub at five
+  EXPECT_FALSE(in_hub);
+
+  // A room off the hallway, with one neighbour, is no hub.
+  HallwayGrid w;
+  SemanticExplorer s(11);
+  s.decide({w.grid, w.costmap, Pose2{1.0, 2.5, 0.0}, 0.0, &w.semantic});
+  EXPECT_EQ(s.currentRoom(), 2);
+  EXPECT_FALSE(s.inHub());
+}
+
 /// Two known rooms (10 x 5 m, x < 5 m is room 1) and, in room 2, a 1.5 x 1.5 m block whose
 /// north, east and south faces were seen (occupied) but whose west face and interior never were:
 /// the unknown inside of a cupboard whose front the laser only grazed. Nothing else is unknown.

@@ -35,6 +35,7 @@ void SemanticExplorerOptions::validate() const {
   if (!finiteAtLeast(observed_radius_m, 0.0)) throw OptionError("semantic.observed_radius_m must be >= 0");
   if (!positive(idle_end_s)) throw OptionError("semantic.idle_end_s must be > 0");
   if (max_iterations_per_call < 1) throw OptionError("semantic.max_iterations_per_call must be >= 1");
+  if (hub_min_neighbours < 0) throw OptionError("semantic.hub_min_neighbours must be >= 0");
 }
 
 std::vector<ParameterRef> SemanticExplorerOptions::parameters() {
@@ -60,6 +61,8 @@ std::vector<ParameterRef> SemanticExplorerOptions::parameters() {
       {"observed_radius_m", &observed_radius_m, "end test: frontier cells still unknown this close to the robot are ignored [m]"},
       {"idle_end_s", &idle_end_s, "idle this long: slivers, then P_sem from every frontier cell; twice this ends [s]"},
       {"max_iterations_per_call", &max_iterations_per_call, "cap on tree iterations run in one call"},
+      {"hub_min_neighbours", &hub_min_neighbours,
+       "a room with this many neighbouring rooms is a hub: no P_sem, no +-A there; 0 = off"},
   };
 }
 
@@ -145,6 +148,7 @@ SemanticExplorer::~SemanticExplorer() = default;
 
 double SemanticExplorer::score(double gain_m2, double cost_m, bool in_current_room) const {
   const double base = options_.gain_weight * gain_m2 - options_.cost_weight * cost_m;
+  if (hub_) return base;
   return in_current_room ? base + options_.room_reward : base - options_.room_reward;
 }
 
@@ -216,6 +220,10 @@ void SemanticExplorer::updateRoom(const ExplorationInput& input) {
     room_since_s_ = input.time_s;
   }
   time_in_room_s_ = room_ != 0 ? input.time_s - room_since_s_ : 0.0;
+  const SemanticRegion* region =
+      room_ != 0 && input.semantic != nullptr ? input.semantic->region(room_) : nullptr;
+  hub_ = region != nullptr && options_.hub_min_neighbours > 0 &&
+         static_cast<int>(region->neighbours.size()) >= options_.hub_min_neighbours;
 }
 
 void SemanticExplorer::collectCandidates(const ExplorationInput& input) {
@@ -226,7 +234,7 @@ void SemanticExplorer::collectCandidates(const ExplorationInput& input) {
     // Nothing to assign: any frontier cell will do (see the header).
     knownCellsBox(input.grid, input.robot.position(), 0, lo, hi);
   } else {
-    if (room_ == 0 || input.semantic == nullptr) return;
+    if (room_ == 0 || input.semantic == nullptr || hub_) return;  // a hub has no P_sem
     const SemanticRegion* region = input.semantic->region(room_);
     if (region == nullptr || region->polygon_m.empty()) return;
     lo = region->polygon_m.front();
