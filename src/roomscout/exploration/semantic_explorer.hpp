@@ -60,11 +60,11 @@
 // a corridor with doors along it) is a place to pass through, not to finish: while the robot
 // is in one, P_sem is not drawn and no point gets +-A, so the plain score picks the next room,
 // mostly the nearest one seen through a door. Finishing the hallway first (to its far end)
-// left the rooms along it half seen, to be fetched at the end: small_house seed 1 reached 80 %
-// after 78 m like mmpf but needed 42 m more for 98 % against mmpf's 12. With the rule (4
-// neighbours) L98 is 121.6 / 257.5 / 623.4 m against 120.6 / 289.9 / 632.9 in the three
-// built-in worlds (10 seeds) and 52.0 against 53.4 m on the HouseExpo plans; revisits 11.1 /
-// 25.9 / 65.1 against 10.8 / 27.9 / 56.5 (docs/semantic_tuning.md, session 16).
+// left the rooms along it half seen, to be fetched at the end (small_house seed 1 at 80 %
+// explored had four such rooms; mmpf none). With the rule (4 neighbours) L98 is 121.6 /
+// 257.5 / 623.4 m against 120.6 / 289.9 / 632.9 in the three built-in worlds (10 seeds) and
+// 52.0 against 53.4 m on the HouseExpo plans; revisits 11.1 / 25.9 / 65.1 against 10.8 /
+// 27.9 / 56.5 (docs/semantic_tuning.md, session 16).
 //
 // Without a semantic map (ExplorationInput::semantic null) no point is in a room: sampling is
 // uniform and every point scores -A, i.e. the plain RRT score.
