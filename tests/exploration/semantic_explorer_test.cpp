@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <utility>
 #include <opencv2/core.hpp>
 
 #include "roomscout/exploration/strategy_registry.hpp"
@@ -17,24 +18,34 @@
 namespace roomscout {
 namespace {
 
-/// A 10 x 6 m grid: x < 5 m is room 1, x >= 5 m room 2; known free for y < 3 m, unknown above.
-struct TwoRoomGrid {
+/// A 10 x 6 m grid at 0.05 m whose cells, and their rooms, come from a function of the cell:
+/// `paint(x, y)` returns {state, room id (0 = none)}.
+struct LabelledGrid {
   OccupancyGrid grid{GridGeometry({0.0, 0.0}, 0.05, 200, 120)};
   Costmap costmap;
   SemanticMap semantic;
-  TwoRoomGrid() {
+  template <class Paint>
+  explicit LabelledGrid(Paint paint) {
     const GridGeometry& g = grid.geometry();
     cv::Mat labels(g.height(), g.width(), CV_32S, cv::Scalar(0));
     for (int y = 0; y < g.height(); ++y) {
       for (int x = 0; x < g.width(); ++x) {
-        const bool known = y < 60;
-        grid.setState(g.index(Cell{x, y}), known ? CellState::kFree : CellState::kUnknown);
-        if (known) labels.at<int>(y, x) = x < 100 ? 1 : 2;
+        const auto [state, label] = paint(x, y);
+        grid.setState(g.index(Cell{x, y}), state);
+        labels.at<int>(y, x) = label;
       }
     }
     costmap.update(grid);
     semantic.update(g, labels, cv::Mat());
   }
+};
+
+/// x < 5 m is room 1, x >= 5 m room 2; known free for y < 3 m, unknown above.
+struct TwoRoomGrid : LabelledGrid {
+  TwoRoomGrid()
+      : LabelledGrid([](int x, int y) {
+          return y < 60 ? std::pair{CellState::kFree, x < 100 ? 1 : 2} : std::pair{CellState::kUnknown, 0};
+        }) {}
 };
 
 TEST(SemanticExplorerTest, SamplingProbabilityFollowsKtOverOnePlusKt) {
@@ -171,29 +182,17 @@ TEST(SemanticExplorerTest, DropsAGoalOnceTheWallBehindItIsSeen) {
   EXPECT_TRUE(keepsTheGoal(0.0));
 }
 
-/// A hallway with four rooms along it (10 x 6 m grid): room 1 is the hallway, y < 1.5 m and
-/// x < 9 m, running on into unknown space at x = 9 m; rooms 2-5, 2.25 m wide each, lie north
-/// of it for x < 9 m and 1.5 <= y < 4 m, unknown beyond y = 4 m, with a wall at x = 9 m. Only
-/// the labels part the rooms, so the hallway has four neighbouring rooms.
-struct HallwayGrid {
-  OccupancyGrid grid{GridGeometry({0.0, 0.0}, 0.05, 200, 120)};
-  Costmap costmap;
-  SemanticMap semantic;
-  HallwayGrid() {
-    const GridGeometry& g = grid.geometry();
-    cv::Mat labels(g.height(), g.width(), CV_32S, cv::Scalar(0));
-    for (int y = 0; y < g.height(); ++y) {
-      for (int x = 0; x < g.width(); ++x) {
-        const int label = x < 180 && y < 80 ? (y < 30 ? 1 : 2 + x / 45) : 0;
-        const bool wall = x == 180 && y >= 30;
-        grid.setState(g.index(Cell{x, y}), wall ? CellState::kOccupied
-                                           : label != 0 ? CellState::kFree : CellState::kUnknown);
-        labels.at<int>(y, x) = label;
-      }
-    }
-    costmap.update(grid);
-    semantic.update(g, labels, cv::Mat());
-  }
+/// A hallway with four rooms along it: room 1 is the hallway, y < 1.5 m and x < 9 m, running on
+/// into unknown space at x = 9 m; rooms 2-5, 2.25 m wide each, lie north of it for x < 9 m and
+/// 1.5 <= y < 4 m, unknown beyond y = 4 m, with a wall at x = 9 m. Only the labels part the
+/// rooms, so the hallway has four neighbouring rooms.
+struct HallwayGrid : LabelledGrid {
+  HallwayGrid()
+      : LabelledGrid([](int x, int y) {
+          if (x == 180 && y >= 30) return std::pair{CellState::kOccupied, 0};
+          if (x >= 180 || y >= 80) return std::pair{CellState::kUnknown, 0};
+          return std::pair{CellState::kFree, y < 30 ? 1 : 2 + x / 45};
+        }) {}
 };
 
 TEST(SemanticExplorerTest, InAHallwayTakesTheRoomBesideItInsteadOfTheHallwaysFarEnd) {
