@@ -27,10 +27,10 @@ TEST(KeyframeSelector, ATurnOnTheSpotMakesNoKeyframeByDefault) {
   KeyframeSelector k;
   EXPECT_TRUE(k.accept({0.0, 0.0, 0.0}));
   for (int i = 1; i <= 30; ++i) EXPECT_FALSE(k.accept({0.0, 0.0, 0.2 * i})) << i;  // a full turn and more
-  EXPECT_FALSE(k.accept({0.015, 0.0, 1.0}));  // 1.5 cm and turned: still the same spot
-  EXPECT_TRUE(k.accept({0.02, 0.0, 1.0}));    // 2 cm and turned 1 rad
-  EXPECT_FALSE(k.accept({0.05, 0.0, 1.1}));   // 3 cm but only 0.1 rad
-  EXPECT_TRUE(k.accept({1.02, 0.0, 1.0}));    // 1 m, no turn
+  EXPECT_FALSE(k.accept({0.09, 0.0, 1.0}));  // 9 cm and turned: still the same spot
+  EXPECT_TRUE(k.accept({0.1, 0.0, 1.0}));     // 10 cm and turned 1 rad
+  EXPECT_FALSE(k.accept({0.3, 0.0, 1.1}));    // 20 cm but only 0.1 rad
+  EXPECT_TRUE(k.accept({1.1, 0.0, 1.0}));     // 1 m, no turn
   EXPECT_EQ(k.keyframes(), 3);
   EXPECT_NE(k.options().describe().find("no turns on the spot"), std::string::npos);
 }

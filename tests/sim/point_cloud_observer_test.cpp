@@ -30,7 +30,7 @@ TEST(PointCloudObserver, InsertsKeyframesOnlyAndTimesThem) {
   for (const Eigen::Vector3f& p : observer.map().points()) {
     ASSERT_TRUE(observer.columns().nearSurface(p.cast<double>(), 0.05)) << p.transpose();
   }
-  EXPECT_NE(observer.description().find("keyframes: every 1 m, or 0.2 rad after 0.02 m"), std::string::npos);
+  EXPECT_NE(observer.description().find("keyframes: every 1 m, or 0.2 rad after 0.1 m"), std::string::npos);
 }
 
 TEST(PointCloudObserver, FloorAndCeilingKeptByDefaultOrRemoved) {
