@@ -46,11 +46,14 @@ TEST(Report, Table1HoldsMeansSdAndSuccessRates) {
   EXPECT_DOUBLE_EQ(*rrt.l98_m.sd, 2.0);
   EXPECT_DOUBLE_EQ(rrt.revisits.mean, 2.0);
   EXPECT_DOUBLE_EQ(*rrt.revisits.sd, 1.0);
+  EXPECT_EQ(rrt.revisits_98.n, 3u);  // up to T98: 0, 1, 2
+  EXPECT_DOUBLE_EQ(rrt.revisits_98.mean, 1.0);
 
   const MethodStats& semantic = report.table1.at({"small_house", "semantic"});
   EXPECT_EQ(semantic.successes, 1u);  // 0.95 < 98 %
   EXPECT_EQ(semantic.t98_s.n, 1u);
   EXPECT_FALSE(semantic.t98_s.sd.has_value());
+  EXPECT_EQ(semantic.revisits_98.n, 0u);  // records without the count (older benches)
 
   const MethodStats& group = report.table1.at({"houseexpo", "nearest_frontier"});
   EXPECT_EQ(group.episodes, 3u);
@@ -70,17 +73,17 @@ TEST(Report, Table1HoldsMeansSdAndSuccessRates) {
   EXPECT_TRUE(
       contains(md, "| MMPF | – | 125 | – | 28 | – | 300.0 | 350 | 80.0 | 87 | 1/1 (100 %) |"))
       << md;
-  // Revisits: small_house, medium_house, houseexpo.
-  EXPECT_TRUE(contains(md, "| RRT | 2.0 ± 1.0 | – | – |")) << md;
-  EXPECT_TRUE(contains(md, "| Ours (semantic) | 2.0 ± 2.8 | – | – |")) << md;
+  // Revisits, whole episode and up to T98: small_house, medium_house, houseexpo.
+  EXPECT_TRUE(contains(md, "| RRT | 2.0 ± 1.0 | 1.0 ± 1.0 | – | – | – | – |")) << md;
+  EXPECT_TRUE(contains(md, "| Ours (semantic) | 2.0 ± 2.8 | – | – | – | – | – |")) << md;
 
   const std::string csv = table1Csv(report);
   // No oracle tours attached: their columns are empty (see report_figures_test.cpp).
-  EXPECT_TRUE(contains(csv, "small_house,0,1,rrt,RRT,3,3,1,3,110,10,3,22,2,3,2,1,171,31,0,,,0,,\n"))
+  EXPECT_TRUE(contains(csv, "small_house,0,1,rrt,RRT,3,3,1,3,110,10,3,22,2,3,2,1,171,31,0,,,0,,,3,1,1\n"))
       << csv;
   EXPECT_TRUE(contains(csv,
                        "houseexpo,1,3,nearest_frontier,Nearest frontier "
-                       "(explore_lite),3,2,0.666667,2,60,14.1421,2,12,2.82843,3,1,1,,,0,,,0,,\n"))
+                       "(explore_lite),3,2,0.666667,2,60,14.1421,2,12,2.82843,3,1,1,,,0,,,0,,,0,,\n"))
       << csv;
 }
 

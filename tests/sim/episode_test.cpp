@@ -61,6 +61,10 @@ TEST_P(EveryMethodExploresTheHouses, ReachesAtLeast98PercentAndEnds) {
   const EpisodeResult r = runEpisode(model, config, *strategy, 1, {}, {&semantic});
   EXPECT_GE(r.exploration_rate, 0.98);
   EXPECT_TRUE(r.t98_s.has_value());
+  // The count up to T98 is the count of the sample that reached 98 %: never more than the
+  // whole episode's, and what the robot does once the map is complete adds to the latter only.
+  ASSERT_TRUE(r.revisits98.has_value());
+  EXPECT_LE(*r.revisits98, r.revisits);
   // rrt ends by itself in 6 of 10 seeds of the medium house, not seed 1 (issue 3, open: the
   // end test still counts frontier cells neither of its detectors sends the robot to).
   if (world_name == "medium_house" && method == "rrt") return;
@@ -120,11 +124,13 @@ TEST(Episode, RoomCountsAreNullWithoutGroundTruthRooms) {
   const nlohmann::json metrics = io::metricsJson({}, without);
   EXPECT_TRUE(metrics.at("revisits").is_null());
   EXPECT_TRUE(metrics.at("rooms_entered").is_null());
+  EXPECT_TRUE(metrics.at("revisits_98").is_null());
 
   const EpisodeResult with = explore(testing::squareRoom(4.0, 0.2), "nearest_frontier", 1);
   EXPECT_TRUE(with.room_truth);
   EXPECT_EQ(with.rooms_entered, 1);
   EXPECT_EQ(io::metricsJson({}, with).at("revisits"), 0);
+  EXPECT_EQ(io::metricsJson({}, with).at("revisits_98"), 0);
 }
 
 TEST(Episode, BumpingIntoAnObstacleTheLaserCannotSeeRecoversAndEnds) {

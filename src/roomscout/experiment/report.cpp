@@ -160,6 +160,7 @@ EpisodeSummary summarizeRecord(const nlohmann::json& record, const std::string& 
   e.t98_s = optionalNumber(record, "t98_s", where);
   e.l98_m = optionalNumber(record, "l98_m", where);
   e.revisits = optionalNumber(record, "revisits", where);
+  e.revisits_98 = optionalNumber(record, "revisits_98", where);
   if (record.contains("map_stats")) {
     const nlohmann::json& maps = record["map_stats"];
     if (!maps.is_object()) throw InputError(where, "'map_stats' must be an object");
@@ -254,7 +255,7 @@ Report buildReport(const ResultSet& results) {
   std::set<std::string> methods;
   struct Samples {
     std::size_t episodes = 0, successes = 0;
-    std::vector<double> t98, l98, revisits, ratio;
+    std::vector<double> t98, l98, revisits, revisits_98, ratio;
   };
   std::map<std::pair<std::string, std::string>, Samples> cells;
   // (world, method) -> distinct (final rate, T98, L98) of its seeds, and its episode count
@@ -282,6 +283,7 @@ Report buildReport(const ResultSet& results) {
     if (e.t98_s) c.t98.push_back(*e.t98_s);
     if (e.l98_m) c.l98.push_back(*e.l98_m);
     if (e.revisits) c.revisits.push_back(*e.revisits);
+    if (e.revisits_98) c.revisits_98.push_back(*e.revisits_98);
     auto& o = outcomes[{e.key.world, e.key.method}];
     o.first.emplace(e.exploration_rate, e.t98_s, e.l98_m);
     ++o.second;
@@ -320,6 +322,7 @@ Report buildReport(const ResultSet& results) {
     s.t98_s = Stat::of(c.t98);
     s.l98_m = Stat::of(c.l98);
     s.revisits = Stat::of(c.revisits);
+    s.revisits_98 = Stat::of(c.revisits_98);
     s.l98_oracle_ratio = Stat::of(c.ratio);
   }
   // A row's cell repeats itself when each of its worlds run with several seeds had one outcome.
@@ -396,8 +399,11 @@ std::string table1Description() {
 }
 
 std::string revisitsDescription() {
-  return "Entries into a ground-truth room that had been entered before, mean ± sample "
-         "standard deviation over all episodes.";
+  return "Entries into a ground-truth room that had been entered before (a room counts as "
+         "entered after 2 s inside), mean ± sample standard deviation: over the whole episode, "
+         "and up to T98 (over the episodes that reached 98 %). A strategy that does not end "
+         "itself keeps driving until the time limit; the count up to T98 is that of the "
+         "exploration alone.";
 }
 
 std::string oracleDescription() {
@@ -473,12 +479,17 @@ plots::HtmlTable revisitsCells(const Report& report) {
   plots::HtmlTable table;
   table.caption = "Revisits";
   table.header = {"Method"};
-  for (const ReportRow& row : report.rows) table.header.push_back(rowTitle(row));
+  for (const ReportRow& row : report.rows) {
+    table.header.push_back(rowTitle(row));
+    table.header.push_back(rowTitle(row) + " to T98");
+  }
   for (const std::string& method : report.methods) {
     std::vector<std::string> cells = {methodLabel(method)};
     for (const ReportRow& row : report.rows) {
       const auto it = report.table1.find({row.name, method});
-      cells.push_back(it == report.table1.end() ? std::string("–") : meanSd(it->second.revisits));
+      const bool has = it != report.table1.end();
+      cells.push_back(has ? meanSd(it->second.revisits) : std::string("–"));
+      cells.push_back(has && it->second.revisits_98.n ? meanSd(it->second.revisits_98) : std::string("–"));
     }
     table.rows.push_back(std::move(cells));
   }
@@ -588,7 +599,7 @@ std::string table1Csv(const Report& report) {
   csv << "world,is_group,worlds,method,method_label,episodes,successes,success_rate,t98_n,t98_"
          "mean_s,t98_sd_s,l98_n,l98_mean_m,l98_sd_m,revisits_n,revisits_mean,revisits_sd,paper_"
          "t_s,paper_l_m,oracle_worlds,oracle_l_mean_m,oracle_l_sd_m,l98_oracle_ratio_n,l98_"
-         "oracle_ratio_mean,l98_oracle_ratio_sd\n";
+         "oracle_ratio_mean,l98_oracle_ratio_sd,revisits_98_n,revisits_98_mean,revisits_98_sd\n";
   for (const ReportRow& row : report.rows) {
     const auto oracle = report.oracle.find(row.name);
     for (const std::string& method : report.methods) {
@@ -614,7 +625,8 @@ std::string table1Csv(const Report& report) {
         csv << "0,,";
       }
       csv << "," << s.l98_oracle_ratio.n << "," << mean(s.l98_oracle_ratio) << ","
-          << csvNumber(s.l98_oracle_ratio.sd) << "\n";
+          << csvNumber(s.l98_oracle_ratio.sd) << "," << s.revisits_98.n << "," << mean(s.revisits_98)
+          << "," << csvNumber(s.revisits_98.sd) << "\n";
     }
   }
   return csv.str();

@@ -57,6 +57,7 @@ nlohmann::json metricsJson(const RunInfo& info, const sim::EpisodeResult& r) {
       {"reachable_area_m2", r.reachable_area_m2},
       // null without ground-truth rooms, so that reports show no count instead of a zero.
       {"revisits", r.room_truth ? nlohmann::json(r.revisits) : nlohmann::json(nullptr)},
+      {"revisits_98", r.room_truth && r.revisits98 ? nlohmann::json(*r.revisits98) : nlohmann::json(nullptr)},
       {"rooms_entered", r.room_truth ? nlohmann::json(r.rooms_entered) : nlohmann::json(nullptr)},
       {"goals", r.goals},
       {"goal_failures", r.goal_failures},

@@ -240,6 +240,7 @@ EpisodeResult runEpisode(const WorldModel& world, EpisodeConfig config, Explorat
     if (!result.t98_s && rate >= opt.completion_rate) {
       result.t98_s = t;
       result.l98_m = robot.odometer_m();
+      result.revisits98 = result.revisits;
     }
   };
 

@@ -93,6 +93,9 @@ struct EpisodeResult {
   bool room_truth = false;         ///< the world has ground-truth rooms: without, the two
                                    ///< counts below are 0 and mean nothing
   int revisits = 0;                ///< entries into a ground-truth room entered before
+  std::optional<int> revisits98;   ///< ... counted up to t98_s (none if never reached):
+                                   ///< the revisits of the exploration itself, whatever the
+                                   ///< strategy does once the map is complete
   int rooms_entered = 0;
   int goals = 0;
   int goal_failures = 0;
