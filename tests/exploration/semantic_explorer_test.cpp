@@ -240,6 +240,49 @@ TEST(SemanticExplorerTest, InAHallwayTakesTheRoomBesideItInsteadOfTheHallwaysFar
   EXPECT_FALSE(s.inHub());
 }
 
+/// A finished room (room 1, x < 2 m) beside room 2 (2 m <= x < 6 m), both 1 m <= y < 3 m with
+/// solid ground around. Two ways on: a 1.2 m gap in room 2's north wall at x = 2.6 m into a
+/// 1.2 m wide, 2.95 m deep alcove, and room 2's open east end into a 2 x 2 m unknown space
+/// (the wall behind it, at x = 8 m, seen). The alcove's squares hold about 0.3 m^2 of G (1.2
+/// m^2 unknown, 0.9 m^2 wall), the east end's up to 2 m^2.
+struct NextRoomGrid : LabelledGrid {
+  NextRoomGrid()
+      : LabelledGrid([](int x, int y) {
+          if (y >= 20 && y < 60 && x < 120) return std::pair{CellState::kFree, x < 40 ? 1 : 2};
+          if (x >= 52 && x < 76 && y >= 60 && y < 119) return std::pair{CellState::kUnknown, 0};
+          if (x >= 120 && x < 160 && y >= 20 && y < 60) return std::pair{CellState::kUnknown, 0};
+          return std::pair{CellState::kOccupied, 0};  // walls and what lies behind them
+        }) {}
+};
+
+TEST(SemanticExplorerTest, ChoosingTheNextRoomTheNearestComesFirst) {
+  // The robot has finished room 1. The plain score (w_g G - w_c C) takes room 2's open east end,
+  // 5 m away with more unknown space around it; with C weighed next_room_cost_factor times,
+  // the alcove 2.5 m away comes first instead of being left to fetch later.
+  for (const std::uint64_t seed : {1u, 2u, 3u}) {
+    for (const double factor : {1.0, SemanticExplorerOptions{}.next_room_cost_factor}) {
+      NextRoomGrid w;
+      SemanticExplorerOptions o;
+      o.next_room_cost_factor = factor;
+      o.iterations_per_s = 2000.0;
+      SemanticExplorer s(seed, o);
+      const Pose2 robot{1.0, 2.0, 0.0};
+      s.decide({w.grid, w.costmap, robot, 0.0, &w.semantic});
+      const Decision d = s.decide({w.grid, w.costmap, robot, 20.0, &w.semantic});
+      EXPECT_EQ(s.currentRoom(), 1);
+      EXPECT_FALSE(s.inHub());
+      EXPECT_TRUE(s.semanticCandidates().empty());  // room 1 is finished
+      ASSERT_EQ(d.status, Decision::Status::kGoal);
+      if (factor == 1.0) {
+        EXPECT_GT(d.goal_m.x(), 5.9) << "seed " << seed << ": " << d.goal_m.transpose();  // the east end
+      } else {
+        EXPECT_LT(d.goal_m.x(), 4.0) << "seed " << seed << ": " << d.goal_m.transpose();  // the alcove
+        EXPECT_GT(d.goal_m.y(), 2.9) << "seed " << seed << ": " << d.goal_m.transpose();
+      }
+    }
+  }
+}
+
 /// Two known rooms (10 x 5 m, x < 5 m is room 1) and, in room 2, a 1.5 x 1.5 m block whose
 /// north, east and south faces were seen (occupied) but whose west face and interior never were:
 /// the unknown inside of a cupboard whose front the laser only grazed. Nothing else is unknown.

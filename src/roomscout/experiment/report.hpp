@@ -52,7 +52,7 @@ struct EpisodeSummary {
   std::optional<double> t98_s;
   std::optional<double> l98_m;
   std::optional<double> revisits;
-  std::optional<double> revisits_98;  ///< revisits up to T98 (records before session 17: none)
+  std::optional<double> revisits_98;  ///< revisits up to T98 (none in older records)
   std::map<std::string, MapSample> maps;  ///< by map type (record's map_stats)
   std::string where;                      ///< "file:line" of the record
   /// What io::loadWorld takes to load the world again: a built-in name, or the world file as

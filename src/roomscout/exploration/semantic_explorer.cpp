@@ -36,6 +36,7 @@ void SemanticExplorerOptions::validate() const {
   if (!positive(idle_end_s)) throw OptionError("semantic.idle_end_s must be > 0");
   if (max_iterations_per_call < 1) throw OptionError("semantic.max_iterations_per_call must be >= 1");
   if (hub_min_neighbours < 0) throw OptionError("semantic.hub_min_neighbours must be >= 0");
+  if (!finiteAtLeast(next_room_cost_factor, 0.0)) throw OptionError("semantic.next_room_cost_factor must be >= 0");
 }
 
 std::vector<ParameterRef> SemanticExplorerOptions::parameters() {
@@ -61,6 +62,8 @@ std::vector<ParameterRef> SemanticExplorerOptions::parameters() {
       {"observed_radius_m", &observed_radius_m, "end test: frontier cells still unknown this close to the robot are ignored [m]"},
       {"idle_end_s", &idle_end_s, "idle this long: slivers, then P_sem from every frontier cell; twice this ends [s]"},
       {"max_iterations_per_call", &max_iterations_per_call, "cap on tree iterations run in one call"},
+      {"next_room_cost_factor", &next_room_cost_factor,
+       "C weighs this many times w_c when choosing the next room (in a hub, or no point left in the room); 1 = off"},
       {"hub_min_neighbours", &hub_min_neighbours,
        "a room with this many neighbouring rooms is a hub: no P_sem, no +-A there; 0 = off"},
   };
@@ -376,7 +379,7 @@ void SemanticExplorer::cost(const ExplorationInput& input, std::vector<Candidate
     dist_stamp_[start] = stamp_;
     heap_.push_back({0.0f, start});
   }
-  const double w_c = options_.cost_weight;
+  const double w_c = w_c_;
   // True when nothing still open can change the choice, given that every block up to d is final.
   auto settled = [&](double d) {
     const double none = -std::numeric_limits<double>::infinity();
@@ -517,12 +520,18 @@ Decision SemanticExplorer::decide(const ExplorationInput& input) {
       const bool inside = room_ != 0 && roomOf(input, points_[i].anchor) == room_;
       if (sliver && !inside) continue;
       cands.push_back({points_[i].p, i, score(a.unknown_m2 - a.occupied_m2, 0.0, inside), sliver, false});
+      cands.back().inside = inside;
     }
     if (has_goal_) {
       const SquareAreas a = squareAreas(input.grid, goal_m_, options_.gain_half_side_m);
       const bool inside = room_ != 0 && roomOf(input, goal_anchor_) == room_;
       cands.push_back({goal_m_, points_.size(), score(a.unknown_m2 - a.occupied_m2, 0.0, inside), false, true});
     }
+    // Choosing the next room: in a hub, or no point left in this room but slivers.
+    const bool next_room = hub_ || std::none_of(cands.begin(), cands.end(), [](const Candidate& k) {
+                             return k.inside && !k.sliver && !k.goal;
+                           });
+    w_c_ = options_.cost_weight * (next_room ? options_.next_room_cost_factor : 1.0);
     cost(input, cands);
     double best_score = -std::numeric_limits<double>::infinity();
     double best_sliver_score = -std::numeric_limits<double>::infinity();
@@ -530,7 +539,7 @@ Decision SemanticExplorer::decide(const ExplorationInput& input) {
     std::size_t best = points_.size(), best_sliver = points_.size();
     for (const Candidate& c : cands) {
       if (!std::isfinite(c.cost_m)) continue;  // no path through the costmap (or cannot win)
-      const double s = c.without_cost - options_.cost_weight * c.cost_m;
+      const double s = c.without_cost - w_c_ * c.cost_m;
       if (c.goal) {
         goal_score = s;
         continue;

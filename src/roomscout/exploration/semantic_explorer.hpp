@@ -66,6 +66,14 @@
 // 52.0 against 53.4 m on the HouseExpo plans; revisits 11.1 / 25.9 / 65.1 against 10.8 /
 // 27.9 / 56.5 (docs/semantic_tuning.md, session 16).
 //
+// Next room. When the robot chooses where to go next, in a hub or because its room has no
+// point left but slivers, every point is outside its room and S is the plain gain-cost
+// trade-off; there C weighs next_room_cost_factor times w_c, so the nearest room seen comes
+// before a larger one further away: a room passed by is a room to come back to. Factor 3:
+// L98 117.3 / 248.3 / 605.9 m against 121.6 / 257.5 / 623.4 in the three built-in worlds
+// (seeds 1-10), revisits 9.9 / 21.8 / 60.8 against 11.1 / 25.9 / 65.1; only in hubs, or
+// factors 2 and 5, gave less (docs/semantic_tuning.md, session 17).
+//
 // Without a semantic map (ExplorationInput::semantic null) no point is in a room: sampling is
 // uniform and every point scores -A, i.e. the plain RRT score.
 //
@@ -115,6 +123,9 @@ struct SemanticExplorerOptions {
   int max_iterations_per_call = 20000; ///< cap on owed iterations run in one call
   int hub_min_neighbours = 4;          ///< a room with this many neighbouring rooms is a hub:
                                        ///< there no P_sem and no +-A; 0 = off
+  double next_room_cost_factor = 3.0;  ///< choosing the next room (in a hub, or no point
+                                       ///< left in the current room but slivers): C weighs
+                                       ///< this many times w_c; 1 = off
 
   void validate() const;
   std::vector<ParameterRef> parameters();
@@ -174,6 +185,7 @@ class SemanticExplorer final : public ExplorationStrategy {
     bool sliver;
     bool goal;
     double cost_m = 0.0;  ///< C; infinite when unreachable (or, geodesic, when it cannot win)
+    bool inside = false;  ///< in the current room (points only)
     std::size_t block = 0;  ///< geodesic C: the search block of p
   };
   /// Sets every candidate's C (see SemanticExplorerOptions::geodesic_cost).
@@ -192,6 +204,7 @@ class SemanticExplorer final : public ExplorationStrategy {
   double last_eval_s_ = -1e9;
   int room_ = 0;
   bool hub_ = false;
+  double w_c_ = 1.0;  ///< the cost weight of the current evaluation (next_room_cost_factor)
   double room_since_s_ = 0.0;
   double time_in_room_s_ = 0.0;
   long semantic_draws_ = 0, random_draws_ = 0;
