@@ -329,7 +329,7 @@ void SemanticExplorer::grow(const ExplorationInput& input, long iterations) {
   }
 }
 
-void SemanticExplorer::cost(const ExplorationInput& input, std::vector<Candidate>& candidates) {
+void SemanticExplorer::cost(const ExplorationInput& input, std::vector<Candidate>& candidates, double w_c) {
   const Vec2 robot = input.robot.position();
   for (Candidate& c : candidates) c.cost_m = (c.p - robot).norm();
   if (!options_.geodesic_cost) return;
@@ -379,7 +379,6 @@ void SemanticExplorer::cost(const ExplorationInput& input, std::vector<Candidate
     dist_stamp_[start] = stamp_;
     heap_.push_back({0.0f, start});
   }
-  const double w_c = w_c_;
   // True when nothing still open can change the choice, given that every block up to d is final.
   auto settled = [&](double d) {
     const double none = -std::numeric_limits<double>::infinity();
@@ -531,15 +530,15 @@ Decision SemanticExplorer::decide(const ExplorationInput& input) {
     const bool next_room = hub_ || std::none_of(cands.begin(), cands.end(), [](const Candidate& k) {
                              return k.inside && !k.sliver && !k.goal;
                            });
-    w_c_ = options_.cost_weight * (next_room ? options_.next_room_cost_factor : 1.0);
-    cost(input, cands);
+    const double w_c = options_.cost_weight * (next_room ? options_.next_room_cost_factor : 1.0);
+    cost(input, cands, w_c);
     double best_score = -std::numeric_limits<double>::infinity();
     double best_sliver_score = -std::numeric_limits<double>::infinity();
     double goal_score = -std::numeric_limits<double>::infinity();
     std::size_t best = points_.size(), best_sliver = points_.size();
     for (const Candidate& c : cands) {
       if (!std::isfinite(c.cost_m)) continue;  // no path through the costmap (or cannot win)
-      const double s = c.without_cost - w_c_ * c.cost_m;
+      const double s = c.without_cost - w_c * c.cost_m;
       if (c.goal) {
         goal_score = s;
         continue;

@@ -188,8 +188,9 @@ class SemanticExplorer final : public ExplorationStrategy {
     bool inside = false;  ///< in the current room (points only)
     std::size_t block = 0;  ///< geodesic C: the search block of p
   };
-  /// Sets every candidate's C (see SemanticExplorerOptions::geodesic_cost).
-  void cost(const ExplorationInput& input, std::vector<Candidate>& candidates);
+  /// Sets every candidate's C (see SemanticExplorerOptions::geodesic_cost); w_c is the weight
+  /// the choice applies to C (the geodesic search stops once no open candidate can win).
+  void cost(const ExplorationInput& input, std::vector<Candidate>& candidates, double w_c);
   bool endTest(const ExplorationInput& input);
 
   SemanticExplorerOptions options_;
@@ -204,7 +205,6 @@ class SemanticExplorer final : public ExplorationStrategy {
   double last_eval_s_ = -1e9;
   int room_ = 0;
   bool hub_ = false;
-  double w_c_ = 1.0;  ///< the cost weight of the current evaluation (next_room_cost_factor)
   double room_since_s_ = 0.0;
   double time_in_room_s_ = 0.0;
   long semantic_draws_ = 0, random_draws_ = 0;
