@@ -71,8 +71,8 @@
 // trade-off; there C weighs next_room_cost_factor times w_c, so the nearest room seen comes
 // before a larger one further away: a room passed by is a room to come back to. Factor 3:
 // L98 117.3 / 248.3 / 605.9 m against 121.6 / 257.5 / 623.4 in the three built-in worlds
-// (seeds 1-10), revisits 9.9 / 21.8 / 60.8 against 11.1 / 25.9 / 65.1; only in hubs, or
-// factors 2 and 5, gave less (docs/semantic_tuning.md, session 17).
+// (seeds 1-10), revisits 9.9 / 21.8 / 60.8 against 11.1 / 25.9 / 65.1. Applied only in hubs, or
+// with factors 2 or 5, it shortened the worlds less (docs/semantic_tuning.md, session 17).
 //
 // Without a semantic map (ExplorationInput::semantic null) no point is in a room: sampling is
 // uniform and every point scores -A, i.e. the plain RRT score.
