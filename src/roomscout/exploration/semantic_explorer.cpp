@@ -21,6 +21,7 @@ void SemanticExplorerOptions::validate() const {
   if (!positive(gain_half_side_m)) throw OptionError("semantic.gain_half_side_m must be > 0");
   if (!finiteAtLeast(min_unknown_m2, 0.0)) throw OptionError("semantic.min_unknown_m2 must be >= 0");
   if (!finiteAtLeast(pocket_area_m2, 0.0)) throw OptionError("semantic.pocket_area_m2 must be >= 0");
+  if (!finiteAtLeast(pocket_area_fraction, 0.0)) throw OptionError("semantic.pocket_area_fraction must be >= 0");
   if (!finiteAtLeast(min_frontier_m, 0.0)) throw OptionError("semantic.min_frontier_m must be >= 0");
   if (!positive(eta_m)) throw OptionError("semantic.eta_m must be > 0");
   if (!positive(iterations_per_s)) throw OptionError("semantic.iterations_per_s must be > 0");
@@ -49,6 +50,8 @@ std::vector<ParameterRef> SemanticExplorerOptions::parameters() {
       {"min_unknown_m2", &min_unknown_m2, "points with less unknown area in G's square are not goals [m^2]"},
       {"min_frontier_m", &min_frontier_m, "squares with less frontier (free cells next to unknown x cell size) are explored; 0 = off [m]"},
       {"pocket_area_m2", &pocket_area_m2, "points opening onto less unknown, non-lethal area count as slivers; 0 = off [m^2]"},
+      {"pocket_area_fraction", &pocket_area_fraction,
+       "once idle, pockets must also be smaller than this fraction of the known free area; 0 = off"},
       {"geodesic_cost", &geodesic_cost, "C is the path length through the costmap instead of the Euclidean distance"},
       {"eta_m", &eta_m, "tree steering step [m]"},
       {"iterations_per_s", &iterations_per_s, "tree iterations per simulated second"},
@@ -436,6 +439,15 @@ void SemanticExplorer::cost(const ExplorationInput& input, std::vector<Candidate
   }
 }
 
+double SemanticExplorer::pocketArea_m2(const OccupancyGrid& grid) const {
+  if (!idle_ || options_.pocket_area_fraction <= 0.0) return options_.pocket_area_m2;
+  const std::uint8_t* states = grid.stateBytes();
+  const auto free_value = static_cast<std::uint8_t>(CellState::kFree);
+  const auto free_cells = std::count(states, states + grid.geometry().cellCount(), free_value);
+  const double res = grid.geometry().resolution_m();
+  return std::min(options_.pocket_area_m2, options_.pocket_area_fraction * static_cast<double>(free_cells) * res * res);
+}
+
 bool SemanticExplorer::endTest(const ExplorationInput& input) {
   if (input.time_s - last_end_check_s_ < options_.end_check_period_s - 1e-9) return false;
   last_end_check_s_ = input.time_s;
@@ -503,7 +515,7 @@ Decision SemanticExplorer::decide(const ExplorationInput& input) {
       cells.reserve(points_.size());
       for (const FrontierPoint& f : points_) cells.push_back(g.cellOf(f.p));
       pockets_.assign(g.cellCount(), 0);
-      markUnknownPockets(pockets_, input.grid, input.costmap, cells, options_.pocket_area_m2, kPocketOpening_m);
+      markUnknownPockets(pockets_, input.grid, input.costmap, cells, pocketArea_m2(input.grid), kPocketOpening_m);
     }
     // The points that may become the goal, with the score's part that does not depend on C.
     std::vector<Candidate>& cands = candidates_scored_;
