@@ -115,6 +115,24 @@ TEST(ReportFigures, RateCurvesShowTheMedianSeedAndGroupMeans) {
   EXPECT_EQ(png.rows, 480);
 }
 
+TEST(ReportFigures, RevisitsUpToT98HaveTheirOwnFigure) {
+  // results_small: rrt in small_house revisits 1 / 2 / 3 over the run, 0 / 1 / 2 up to T98;
+  // results_curves records no revisits up to T98, so it has no such figure.
+  const ResultSet results = loadResults({kData / "results_small.jsonl"});
+  const ReportFigures figures = renderReportFigures(results, buildReport(results));
+  const ReportFigure* whole = find(figures, "revisits");
+  const ReportFigure* to_t98 = find(figures, "revisits_98");
+  ASSERT_NE(whole, nullptr);
+  ASSERT_NE(to_t98, nullptr);
+  EXPECT_EQ(to_t98->kind, "revisits");  // the report's revisits section shows both
+  EXPECT_TRUE(contains(to_t98->figure.svg, "Room revisits up to T98"));
+  EXPECT_TRUE(contains(whole->figure.svg, "2.0"));   // mean of 1, 2, 3
+  EXPECT_TRUE(contains(to_t98->figure.svg, "1.0"));  // mean of 0, 1, 2
+  EXPECT_FALSE(contains(to_t98->figure.svg, "2.0"));
+  const ResultSet curves = loadResults({kData / "results_curves.jsonl"});
+  EXPECT_EQ(find(renderReportFigures(curves, buildReport(curves)), "revisits_98"), nullptr);
+}
+
 TEST(ReportOracle, TableIHasTheOracleColumnDeterministically) {
   ResultSet results = loadResults({kData / "results_small.jsonl"});
   const OracleSummary summary = attachOracleTours(results, {2});
@@ -228,11 +246,11 @@ TEST(ReportWriter, WritesTablesFiguresAndPageFromABench) {
   // The page holds every table and every figure, inline.
   const std::string html = io::readFile(dir / "report" / "report.html");
   EXPECT_EQ(count(html, "<table class=\"report-table\">"), 5u);  // I, revisits, oracle, II, III
-  EXPECT_EQ(count(html, "<figure class=\"report-figure\">"), 4u);
+  EXPECT_EQ(count(html, "<figure class=\"report-figure\">"), 5u);  // Fig. 5-7, revisits (run, to T98)
   for (const char* part :
        {"Table I: exploration time", "Revisits", "Oracle reference", "Table II: map types",
         "Table III: storage", "Fig. 5, rooms", "Fig. 6, rooms", "Fig. 7, rooms",
-        "Room revisits per method", "tiny (1 world) L98 / oracle"}) {
+        "Room revisits per method", "Room revisits up to T98 per method", "tiny (1 world) L98 / oracle"}) {
     EXPECT_TRUE(contains(html, part)) << part;
   }
   EXPECT_TRUE(contains(html, rate_svg.substr(rate_svg.find("<svg"), 200)));

@@ -393,9 +393,10 @@ std::optional<ReportFigure> mapsFigure(const Report& report, const EpisodeIndex&
   return f;
 }
 
-std::optional<ReportFigure> revisitsFigure(const Report& report) {
+/// Mean room revisits per method and row: over the whole run, or (to_t98) up to T98.
+std::optional<ReportFigure> revisitsFigure(const Report& report, bool to_t98) {
   plots::BarChart chart;
-  chart.title = "Room revisits";
+  chart.title = to_t98 ? "Room revisits up to T98" : "Room revisits";
   chart.y_label = "revisits (mean over episodes)";
   bool any = false;
   for (const ReportRow& row : report.rows) chart.categories.push_back(rowTitle(row));
@@ -405,8 +406,11 @@ std::optional<ReportFigure> revisitsFigure(const Report& report) {
     s.color = methodColor(report, method);
     for (const ReportRow& row : report.rows) {
       const auto it = report.table1.find({row.name, method});
-      if (it != report.table1.end() && it->second.revisits.n > 0) {
-        s.values.push_back(it->second.revisits.mean);
+      const Stat* stat = it == report.table1.end() ? nullptr
+                         : to_t98                  ? &it->second.revisits_98
+                                                   : &it->second.revisits;
+      if (stat != nullptr && stat->n > 0) {
+        s.values.push_back(stat->mean);
         any = true;
       } else {
         s.values.push_back(std::nan(""));
@@ -419,11 +423,13 @@ std::optional<ReportFigure> revisitsFigure(const Report& report) {
   const int bars = static_cast<int>(report.rows.size() * report.methods.size());
   chart.size = {std::clamp(420 + 34 * bars, 720, 1600), 440};
   ReportFigure f;
-  f.stem = "revisits";
+  f.stem = to_t98 ? "revisits_98" : "revisits";
   f.kind = "revisits";
-  f.caption =
-      "Room revisits per method and world: entries into a ground-truth room entered "
-      "before, mean over the episodes (a group pools every world × seed episode).";
+  f.caption = to_t98 ? "Room revisits up to T98 per method and world: the revisits of the exploration itself, "
+                       "whatever a method does once the map is 98 % complete (mean over the episodes that "
+                       "reached 98 %; a group pools every world × seed episode)."
+                     : "Room revisits per method and world: entries into a ground-truth room entered "
+                       "before, mean over the episodes (a group pools every world × seed episode).";
   f.figure = plots::renderBarChart(chart);
   return f;
 }
@@ -448,7 +454,8 @@ ReportFigures renderReportFigures(const ResultSet& results, const Report& report
       out.figures.push_back(std::move(*f));
     }
   }
-  if (auto f = revisitsFigure(report)) out.figures.push_back(std::move(*f));
+  if (auto f = revisitsFigure(report, false)) out.figures.push_back(std::move(*f));
+  if (auto f = revisitsFigure(report, true)) out.figures.push_back(std::move(*f));
   return out;
 }
 
