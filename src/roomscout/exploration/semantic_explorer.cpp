@@ -21,7 +21,9 @@ void SemanticExplorerOptions::validate() const {
   if (!positive(gain_half_side_m)) throw OptionError("semantic.gain_half_side_m must be > 0");
   if (!finiteAtLeast(min_unknown_m2, 0.0)) throw OptionError("semantic.min_unknown_m2 must be >= 0");
   if (!finiteAtLeast(pocket_area_m2, 0.0)) throw OptionError("semantic.pocket_area_m2 must be >= 0");
-  if (!finiteAtLeast(pocket_area_fraction, 0.0)) throw OptionError("semantic.pocket_area_fraction must be >= 0");
+  if (!finiteAtLeast(pocket_area_fraction, 0.0)) {
+    throw OptionError("semantic.pocket_area_fraction must be >= 0");
+  }
   if (!finiteAtLeast(min_frontier_m, 0.0)) throw OptionError("semantic.min_frontier_m must be >= 0");
   if (!positive(eta_m)) throw OptionError("semantic.eta_m must be > 0");
   if (!positive(iterations_per_s)) throw OptionError("semantic.iterations_per_s must be > 0");
@@ -445,7 +447,8 @@ double SemanticExplorer::pocketArea_m2(const OccupancyGrid& grid) const {
   const auto free_value = static_cast<std::uint8_t>(CellState::kFree);
   const auto free_cells = std::count(states, states + grid.geometry().cellCount(), free_value);
   const double res = grid.geometry().resolution_m();
-  return std::min(options_.pocket_area_m2, options_.pocket_area_fraction * static_cast<double>(free_cells) * res * res);
+  const double free_m2 = static_cast<double>(free_cells) * res * res;
+  return std::min(options_.pocket_area_m2, options_.pocket_area_fraction * free_m2);
 }
 
 bool SemanticExplorer::endTest(const ExplorationInput& input) {
@@ -515,7 +518,8 @@ Decision SemanticExplorer::decide(const ExplorationInput& input) {
       cells.reserve(points_.size());
       for (const FrontierPoint& f : points_) cells.push_back(g.cellOf(f.p));
       pockets_.assign(g.cellCount(), 0);
-      markUnknownPockets(pockets_, input.grid, input.costmap, cells, pocketArea_m2(input.grid), kPocketOpening_m);
+      markUnknownPockets(pockets_, input.grid, input.costmap, cells, pocketArea_m2(input.grid),
+                         kPocketOpening_m);
     }
     // The points that may become the goal, with the score's part that does not depend on C.
     std::vector<Candidate>& cands = candidates_scored_;

@@ -43,13 +43,13 @@
 // -5 / -13 / -16 % without; the price: a shadowed wedge of floor that small is left too, final
 // rate 99.5 / 99.8 / 99.5 % instead of 99.9 / 99.9 / 99.8 %; docs/semantic_tuning.md, session
 // 10). Once the robot has idled (below), a pocket must also be smaller than
-// pocket_area_fraction of the known free area: in a flat of 38 m^2 a 0.7 m^2 wedge of floor seen
-// past a door jamb is 2 % of the floor, and a HouseExpo plan ended at 97 % for it (session 18;
-// before idling the threshold stays absolute: relative from the start, L98 in large_office was
-// 2 % longer). The goal is re-evaluated when it is reached or fails, when its square is explored (it
-// would be a sliver now: too little unknown space or frontier left) or its point lies in the
-// inflation, and every replan_period_s while driving, when another point beats the goal's own
-// score by switch_margin. The goal is not dropped as soon as its own cell is seen: the laser's
+// pocket_area_fraction of the known free area: in a flat of 38 m^2 a 0.7 m^2 wedge of floor
+// seen past a door jamb is 2 % of the floor, and a HouseExpo plan ended at 97 % for it
+// (session 18; before idling the threshold stays absolute: relative from the start, L98 in
+// large_office was 2 % longer). The goal is re-evaluated when it is reached or fails, when its
+// square is explored (it would be a sliver now: too little unknown space or frontier left) or
+// its point lies in the inflation, and every replan_period_s while driving, when another point
+// beats the goal's own score by switch_margin. The goal is not dropped as soon as its own cell is seen: the laser's
 // edge recedes in front of the robot, and choosing afresh every time it does made the robot swing
 // between points 3.5 m away in different directions (L98 -10 to -20 %, revisits about halved;
 // docs/semantic_tuning.md, fourth pass).
