@@ -365,7 +365,8 @@ TEST(SemanticExplorerTest, OnceIdleLooksIntoAPocketThatIsLargeForTheMap) {
   EXPECT_LT(with.done_s, 0.0) << "ended at " << with.done_s << " s";
   const Outcome without = run(0.0);
   EXPECT_LT(without.first_block_goal_s, 0.0);
-  EXPECT_GE(without.done_s, 2.0 * defaults.idle_end_s) << "ends after idling twice idle_end_s";
+  // Idle with nothing left but a pocket: the end phase has no cell to visit, so it ends.
+  EXPECT_GE(without.done_s, defaults.idle_end_s) << "not before idling";
 }
 
 /// A known 12 x 6 m floor split by a wall at x = 4 m that leaves a 1 m gap at the north end,

@@ -171,6 +171,40 @@ void SemanticExplorer::onGoalFailed(const Vec2& goal_m) {
   // Reached while still unknown (unobservable from there) or unreachable: not sent again.
   if (has_goal_ && (goal_m - goal_m_).norm() < 1e-9) blacklist_.push_back(goal_m);
   has_goal_ = false;
+  if (end_cell_ && (goal_m - *end_cell_).norm() < 1e-9) {
+    end_cells_done_.push_back(*end_cell_);
+    end_cell_.reset();
+  }
+}
+
+std::optional<Vec2> SemanticExplorer::endPhaseCell(const ExplorationInput& input) {
+  const GridGeometry& g = input.grid.geometry();
+  for (const Vec2& f : end_cells_done_) markDisc(visited_, g, f, options_.observed_radius_m);
+  end_cells_done_.clear();
+  if (end_cell_) {
+    const std::size_t i = g.index(g.cellOf(*end_cell_));
+    if (input.grid.isUnknown(i) && !visited_[i] && !input.costmap.isLethal(i)) return end_cell_;
+    end_cell_.reset();
+  }
+  const Vec2 robot = input.robot.position();
+  const std::vector<Cell> cells =
+      reachableFrontierCells(input.grid, input.costmap, 4, &visited_, &robot);
+  // Not those opening onto a pocket (pocketArea_m2: relative to the map by now).
+  std::vector<std::uint8_t> pockets;
+  if (options_.pocket_area_m2 > 0.0) {
+    markUnknownPockets(pockets, input.grid, input.costmap, cells, pocketArea_m2(input.grid),
+                       kPocketOpening_m);
+  }
+  double best_d2 = std::numeric_limits<double>::infinity();
+  for (const Cell& c : cells) {
+    if (!pockets.empty() && pockets[g.index(c)]) continue;
+    const double d2 = (g.centerOf(c) - robot).squaredNorm();
+    if (d2 < best_d2) {
+      best_d2 = d2;
+      end_cell_ = g.centerOf(c);
+    }
+  }
+  return end_cell_;
 }
 
 bool SemanticExplorer::stale(const ExplorationInput& input, const Vec2& p) const {
@@ -495,6 +529,15 @@ Decision SemanticExplorer::decide(const ExplorationInput& input) {
     return true;
   });
   if (endTest(input)) return Decision::done();
+  if (end_phase_) {
+    // The robot idled for idle_end_s with no point and no sliver of its room left: from here
+    // it visits the reachable frontier cells (as the end test counts them) it has not come
+    // within observed_radius_m of and that open onto no pocket, nearest first, and ends when
+    // none is left (or the end test passes). Tree points found on the way (on walls the laser
+    // only grazed, mostly) no longer become goals: they restarted the idling every idle_end_s.
+    if (const std::optional<Vec2> cell = endPhaseCell(input)) return Decision::goal(*cell);
+    return Decision::done();
+  }
 
   // The goal is kept until its square is explored (less than min_unknown_m2 of unknown space
   // or min_frontier_m of frontier left), not merely until its own cell is seen: the laser's
@@ -580,6 +623,10 @@ Decision SemanticExplorer::decide(const ExplorationInput& input) {
   }
   // Nothing to assign: wait where we are while the tree grows.
   if (idle_since_s_ < 0.0) idle_since_s_ = input.time_s;
+  if (idle_) {
+    end_phase_ = true;
+    if (const std::optional<Vec2> cell = endPhaseCell(input)) return Decision::goal(*cell);
+  }
   if (input.time_s - idle_since_s_ >= 2.0 * options_.idle_end_s) return Decision::done();
   if (const auto wait = nearestGoalCell(input.grid, input.costmap, robot, 3.0)) return Decision::goal(*wait);
   return Decision::done();
