@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <cstdlib>
 #include <filesystem>
 #include <string>
@@ -26,6 +27,18 @@ fs::path dataDir() {
   return dir ? fs::path(dir) : fs::path();
 }
 
+/// One episode of `method` with `seed` on a map_server world (the rooms the semantic strategy
+/// reads built as it explores; the others ignore them).
+sim::EpisodeResult explore(const fs::path& yaml, const std::string& method, std::uint64_t seed) {
+  const sim::World world = io::loadImageWorld(yaml, std::nullopt);
+  sim::EpisodeConfig config;
+  config.resolve();
+  const sim::WorldModel model(world, config.world);
+  auto strategy = createStrategy(method, seed);
+  sim::AnalysisMapsObserver semantic(sim::AnalysisMapKind::kSemantic);
+  return sim::runEpisode(model, config, *strategy, seed, {}, {&semantic});
+}
+
 class ExploreBenchMaps : public ::testing::TestWithParam<std::tuple<std::string, std::string>> {};
 
 TEST_P(ExploreBenchMaps, ExploresAtLeast98PercentAndEnds) {
@@ -33,14 +46,7 @@ TEST_P(ExploreBenchMaps, ExploresAtLeast98PercentAndEnds) {
   const fs::path yaml = dataDir() / "floorplans" / "explore_bench" / (map + ".yaml");
   // The data set is part of the test environment: a missing one is a failure, not a skip.
   ASSERT_TRUE(fs::exists(yaml)) << "set ROOMSCOUT_DATA_DIR to the shared data folder; not found: " << yaml;
-  const sim::World world = io::loadImageWorld(yaml, std::nullopt);
-  sim::EpisodeConfig config;
-  config.resolve();
-  const sim::WorldModel model(world, config.world);
-  auto strategy = createStrategy(method, 1);
-  // The rooms the semantic strategy reads (the others ignore them).
-  sim::AnalysisMapsObserver semantic(sim::AnalysisMapKind::kSemantic);
-  const sim::EpisodeResult r = sim::runEpisode(model, config, *strategy, 1, {}, {&semantic});
+  const sim::EpisodeResult r = explore(yaml, method, 1);
   EXPECT_GE(r.exploration_rate, 0.98) << map << " " << method;
   EXPECT_FALSE(r.timed_out) << map << " " << method;
 }
@@ -65,14 +71,7 @@ TEST_P(HouseExpoPlans, SemanticExploresAtLeast98PercentAndEnds) {
   const auto& [plan, seed] = GetParam();
   const fs::path yaml = dataDir() / "floorplans" / "houseexpo" / (plan + ".yaml");
   ASSERT_TRUE(fs::exists(yaml)) << "set ROOMSCOUT_DATA_DIR to the shared data folder; not found: " << yaml;
-  const sim::World world = io::loadImageWorld(yaml, std::nullopt);
-  sim::EpisodeConfig config;
-  config.resolve();
-  const sim::WorldModel model(world, config.world);
-  auto strategy = createStrategy("semantic", static_cast<std::uint64_t>(seed));
-  sim::AnalysisMapsObserver semantic(sim::AnalysisMapKind::kSemantic);
-  const sim::EpisodeResult r =
-      sim::runEpisode(model, config, *strategy, static_cast<std::uint64_t>(seed), {}, {&semantic});
+  const sim::EpisodeResult r = explore(yaml, "semantic", static_cast<std::uint64_t>(seed));
   EXPECT_GE(r.exploration_rate, 0.98);
   EXPECT_FALSE(r.timed_out);
 }

@@ -49,10 +49,10 @@
 // large_office was 2 % longer). The goal is re-evaluated when it is reached or fails, when its
 // square is explored (it would be a sliver now: too little unknown space or frontier left) or
 // its point lies in the inflation, and every replan_period_s while driving, when another point
-// beats the goal's own score by switch_margin. The goal is not dropped as soon as its own cell is seen: the laser's
-// edge recedes in front of the robot, and choosing afresh every time it does made the robot swing
-// between points 3.5 m away in different directions (L98 -10 to -20 %, revisits about halved;
-// docs/semantic_tuning.md, fourth pass).
+// beats the goal's own score by switch_margin. The goal is not dropped as soon as its own cell
+// is seen: the laser's edge recedes in front of the robot, and choosing afresh every time it
+// does made the robot swing between points 3.5 m away in different directions (L98 -10 to
+// -20 %, revisits about halved; docs/semantic_tuning.md, fourth pass).
 //
 // End: as improved_rrt (fewer than end_min_frontier_cells reachable frontier cells in
 // end_checks consecutive checks, each end_check_period_s; cells the robot came within
@@ -211,7 +211,7 @@ class SemanticExplorer final : public ExplorationStrategy {
   void cost(const ExplorationInput& input, std::vector<Candidate>& candidates, double w_c);
   bool endTest(const ExplorationInput& input);
   /// The end phase's goal: the nearest reachable frontier cell (as the end test counts them)
-  /// the robot has not come within observed_radius_m of, or none.
+  /// the robot has not come within observed_radius_m of and that opens onto no pocket, or none.
   std::optional<Vec2> endPhaseCell(const ExplorationInput& input);
   /// The pocket threshold now: pocket_area_m2, or once idle pocket_area_fraction of the known
   /// free area if that is less.
