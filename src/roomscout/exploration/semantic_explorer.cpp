@@ -510,6 +510,16 @@ Decision SemanticExplorer::decide(const ExplorationInput& input) {
   markDisc(visited_, g, robot, options_.observed_radius_m);
   updateRoom(input);
   idle_ = idle_since_s_ >= 0.0 && input.time_s - idle_since_s_ >= options_.idle_end_s - 1e-9;
+  if (end_phase_) {
+    // The robot idled for idle_end_s with no point and no sliver of its room left: from here
+    // it visits the reachable frontier cells (as the end test counts them) it has not come
+    // within observed_radius_m of and that open onto no pocket, nearest first, and ends when
+    // none is left (or the end test passes). Tree points found on the way (on walls the laser
+    // only grazed, mostly) restarted the idling every idle_end_s, so the tree stops growing.
+    if (endTest(input)) return Decision::done();
+    if (const std::optional<Vec2> cell = endPhaseCell(input)) return Decision::goal(*cell);
+    return Decision::done();
+  }
   collectCandidates(input);
 
   const double owed = (input.time_s - grown_until_s_) * options_.iterations_per_s;
@@ -529,15 +539,6 @@ Decision SemanticExplorer::decide(const ExplorationInput& input) {
     return true;
   });
   if (endTest(input)) return Decision::done();
-  if (end_phase_) {
-    // The robot idled for idle_end_s with no point and no sliver of its room left: from here
-    // it visits the reachable frontier cells (as the end test counts them) it has not come
-    // within observed_radius_m of and that open onto no pocket, nearest first, and ends when
-    // none is left (or the end test passes). Tree points found on the way (on walls the laser
-    // only grazed, mostly) no longer become goals: they restarted the idling every idle_end_s.
-    if (const std::optional<Vec2> cell = endPhaseCell(input)) return Decision::goal(*cell);
-    return Decision::done();
-  }
 
   // The goal is kept until its square is explored (less than min_unknown_m2 of unknown space
   // or min_frontier_m of frontier left), not merely until its own cell is seen: the laser's
