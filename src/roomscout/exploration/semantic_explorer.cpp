@@ -65,7 +65,7 @@ std::vector<ParameterRef> SemanticExplorerOptions::parameters() {
       {"end_checks", &end_checks, "consecutive failing end tests that end exploration"},
       {"end_min_frontier_cells", &end_min_frontier_cells, "fewer reachable frontier cells fail the end test"},
       {"observed_radius_m", &observed_radius_m, "end test: frontier cells still unknown this close to the robot are ignored [m]"},
-      {"idle_end_s", &idle_end_s, "idle this long: slivers, then P_sem from every frontier cell; twice this ends [s]"},
+      {"idle_end_s", &idle_end_s, "idle this long: the room's slivers, then the end phase [s]"},
       {"max_iterations_per_call", &max_iterations_per_call, "cap on tree iterations run in one call"},
       {"next_room_cost_factor", &next_room_cost_factor,
        "C weighs this many times w_c when choosing the next room (in a hub, or no point left in the room); 1 = off"},
@@ -84,8 +84,6 @@ namespace {
 /// Unknown space that reaches the known map's border through an opening this wide is no
 /// pocket, whatever its area: it may go on beyond the map (the baselines' min_opening_m).
 constexpr double kPocketOpening_m = 0.4;
-/// P(P_sem) once the robot has idled for idle_end_s, P_sem then being any frontier cell.
-constexpr double kIdleSemanticProbability = 0.5;
 /// Geodesic C is searched on blocks of this many cells a side (0.1 m at 0.05 m cells).
 constexpr int kBlock = 2;
 
@@ -271,20 +269,13 @@ void SemanticExplorer::updateRoom(const ExplorationInput& input) {
 void SemanticExplorer::collectCandidates(const ExplorationInput& input) {
   candidates_.clear();
   const GridGeometry& g = input.grid.geometry();
-  Vec2 lo, hi;
-  if (idle_) {
-    // Nothing to assign: any frontier cell will do (see the header).
-    knownCellsBox(input.grid, input.robot.position(), 0, lo, hi);
-  } else {
-    if (room_ == 0 || input.semantic == nullptr || hub_) return;  // a hub has no P_sem
-    const SemanticRegion* region = input.semantic->region(room_);
-    if (region == nullptr || region->polygon_m.empty()) return;
-    lo = region->polygon_m.front();
-    hi = lo;
-    for (const Vec2& v : region->polygon_m) {
-      lo = lo.cwiseMin(v);
-      hi = hi.cwiseMax(v);
-    }
+  if (room_ == 0 || input.semantic == nullptr || hub_) return;  // a hub has no P_sem
+  const SemanticRegion* region = input.semantic->region(room_);
+  if (region == nullptr || region->polygon_m.empty()) return;
+  Vec2 lo = region->polygon_m.front(), hi = lo;
+  for (const Vec2& v : region->polygon_m) {
+    lo = lo.cwiseMin(v);
+    hi = hi.cwiseMax(v);
   }
   const double pad = options_.label_search_m + g.resolution_m();
   const Cell a = g.cellOf(lo - Vec2(pad, pad));
@@ -324,7 +315,7 @@ void SemanticExplorer::collectCandidates(const ExplorationInput& input) {
       }
       if (unknownIn(x, y) * cell_m2 < options_.min_unknown_m2) continue;
       const Vec2 p = g.centerOf(Cell{x, y});
-      if (idle_ || roomOf(input, p) == room_) candidates_.push_back(p);
+      if (roomOf(input, p) == room_) candidates_.push_back(p);
     }
   }
 }
@@ -337,7 +328,7 @@ void SemanticExplorer::grow(const ExplorationInput& input, long iterations) {
   // box's edge anyway.
   knownCellsBox(input.grid, input.robot.position(), 0, box_min, box_max);
   const RrtTree::Sampler uniform = uniformBoxSampler(box_min, box_max);
-  const double p_sem = idle_ ? kIdleSemanticProbability : semanticSampleProbability(options_.k, time_in_room_s_);
+  const double p_sem = semanticSampleProbability(options_.k, time_in_room_s_);
   if (point_cells_.size() != g.cellCount()) point_cells_.assign(g.cellCount(), 0);
   for (long n = 0; n < iterations; ++n) {
     Vec2 sample;
@@ -622,13 +613,14 @@ Decision SemanticExplorer::decide(const ExplorationInput& input) {
     idle_since_s_ = -1.0;
     return Decision::goal(goal_m_);
   }
-  // Nothing to assign: wait where we are while the tree grows.
+  // Nothing to assign: wait where we are while the tree grows, or, idle for idle_end_s, the
+  // end phase (see its block above).
   if (idle_since_s_ < 0.0) idle_since_s_ = input.time_s;
   if (idle_) {
     end_phase_ = true;
     if (const std::optional<Vec2> cell = endPhaseCell(input)) return Decision::goal(*cell);
+    return Decision::done();
   }
-  if (input.time_s - idle_since_s_ >= 2.0 * options_.idle_end_s) return Decision::done();
   if (const auto wait = nearestGoalCell(input.grid, input.costmap, robot, 3.0)) return Decision::goal(*wait);
   return Decision::done();
 }

@@ -14,10 +14,9 @@
 // the edge crosses the frontier instead of stopping on its free side. An edge that reaches
 // unknown space adds its first unknown point P_i to the frontier point set F.
 // Once the robot has had no goal for idle_end_s (F holds nothing worth the trip), it turns to
-// the slivers of its room (see decide()), and P_sem is drawn with probability 1/2 from every
-// frontier cell of the map, whatever k: uniform samples, all inside the known cells' box,
-// seldom lead an edge across a frontier on the box's edge (the open end of a corridor), and
-// without this one HouseExpo plan ended at 63 % explored.
+// the slivers of its room, then to the end phase (see decide() and End below): uniform samples,
+// all inside the known cells' box, seldom lead an edge across a frontier on the box's edge
+// (the open end of a corridor), and without either one HouseExpo plan ended at 63 % explored.
 //
 // Evaluation (§III-C.2). For each P_i in F: G = (unknown - occupied) area in the square of
 // half-side gain_half_side_m around P_i; C = the length of the shortest path from the robot
@@ -56,11 +55,11 @@
 //
 // End: as improved_rrt (fewer than end_min_frontier_cells reachable frontier cells in
 // end_checks consecutive checks, each end_check_period_s; cells the robot came within
-// observed_radius_m of are ignored), or no point to assign for twice idle_end_s (no sliver
-// left in the current room that the robot has not come close to, see decide(), and none found
-// by the frontier-wide P_sem of the second half). End phase (session 18): once the robot has
-// idled for idle_end_s with nothing to assign, it visits those reachable frontier cells, nearest
-// first, skipping the ones that open onto a pocket, and ends when none is left; tree points no
+// observed_radius_m of are ignored), or the end phase's end. End phase (session 18): once the
+// robot has idled for idle_end_s with nothing to assign (no point, and no sliver left in the
+// current room that it has not come close to, see decide()), it visits those reachable
+// frontier cells, nearest first, skipping the ones that open onto a pocket, and ends when none
+// is left; tree points no
 // longer become goals then (points found on a wall the laser only grazed restarted the idling
 // every idle_end_s and one HouseExpo plan never ended). The tree misses wedges of rooms seen
 // from their doors: a HouseExpo plan ended at 97.8 % without the phase; with it all 150
@@ -136,8 +135,8 @@ struct SemanticExplorerOptions {
   int end_min_frontier_cells = 2;      ///< fewer reachable frontier cells fail the end test
   double observed_radius_m = 0.75;     ///< end test ignores frontier cells that stayed unknown
                                        ///< with the robot this close [m]
-  double idle_end_s = 30.0;            ///< idling this long: slivers, then P_sem from every
-                                       ///< frontier cell; twice this ends exploration [s]
+  double idle_end_s = 30.0;            ///< idling this long: the current room's slivers, then
+                                       ///< the end phase [s]
   int max_iterations_per_call = 20000; ///< cap on owed iterations run in one call
   int hub_min_neighbours = 4;          ///< a room with this many neighbouring rooms is a hub:
                                        ///< there no P_sem and no +-A; 0 = off
@@ -246,7 +245,7 @@ class SemanticExplorer final : public ExplorationStrategy {
   std::vector<std::uint32_t> dist_stamp_;    ///< ... valid where the stamp is stamp_
   std::uint32_t stamp_ = 0;
   std::vector<std::pair<float, std::size_t>> heap_;
-  bool idle_ = false;  ///< idle for idle_end_s: P_sem is drawn from every frontier cell
+  bool idle_ = false;  ///< idle for idle_end_s: slivers, then the end phase
   bool has_goal_ = false;
   Vec2 goal_m_ = Vec2::Zero();
   Vec2 goal_anchor_ = Vec2::Zero();
