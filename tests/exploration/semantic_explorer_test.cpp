@@ -198,8 +198,10 @@ struct HallwayGrid : LabelledGrid {
 TEST(SemanticExplorerTest, InAHallwayTakesTheRoomBesideItInsteadOfTheHallwaysFarEnd) {
   // Robot in the hallway at x = 2 m: the rooms north of it open 3.3 m away, the hallway's own
   // frontier 7 m away. With the room reward the hallway's end wins (+A against -A); the hub
-  // rule drops the reward there, and a room beside the robot wins.
-  auto firstGoal = [](int hub_min_neighbours, bool& in_hub, bool& has_candidates) {
+  // rule drops the reward there, and a room beside the robot wins. In the hub P_sem comes from
+  // the frontier near the robot: the rooms' frontier within 4 m (plus the label search), not
+  // the hallway's end.
+  auto firstGoal = [](int hub_min_neighbours, bool& in_hub, std::vector<Vec2>& candidates) {
     HallwayGrid w;
     ASSERT_EQ(w.semantic.region(1)->neighbours.size(), 4u);
     SemanticExplorerOptions o;
@@ -211,7 +213,7 @@ TEST(SemanticExplorerTest, InAHallwayTakesTheRoomBesideItInsteadOfTheHallwaysFar
     const Decision d = s.decide({w.grid, w.costmap, robot, 20.0, &w.semantic});
     EXPECT_EQ(s.currentRoom(), 1);
     in_hub = s.inHub();
-    has_candidates = !s.semanticCandidates().empty();
+    candidates = s.semanticCandidates();
     ASSERT_EQ(d.status, Decision::Status::kGoal);
     if (in_hub) {
       EXPECT_DOUBLE_EQ(s.score(2.0, 3.0, true), s.score(2.0, 3.0, false));
@@ -222,14 +224,22 @@ TEST(SemanticExplorerTest, InAHallwayTakesTheRoomBesideItInsteadOfTheHallwaysFar
       EXPECT_LT(d.goal_m.y(), 1.6) << d.goal_m.transpose();
     }
   };
-  bool in_hub = false, has_candidates = false;
-  firstGoal(SemanticExplorerOptions{}.hub_min_neighbours, in_hub, has_candidates);
+  bool in_hub = false;
+  std::vector<Vec2> candidates;
+  firstGoal(SemanticExplorerOptions{}.hub_min_neighbours, in_hub, candidates);
   EXPECT_TRUE(in_hub);
-  EXPECT_FALSE(has_candidates);  // no P_sem in a hub
-  firstGoal(0, in_hub, has_candidates);
+  ASSERT_FALSE(candidates.empty());
+  const SemanticExplorerOptions defaults;
+  const double reach_m = defaults.hub_sample_radius_m + defaults.label_search_m + 0.1;
+  for (const Vec2& c : candidates) {
+    EXPECT_LE((c - Vec2(2.0, 0.75)).lpNorm<Eigen::Infinity>(), reach_m) << c.transpose();
+    EXPECT_GT(c.y(), 3.8) << c.transpose();  // the rooms' frontier, not the hallway's end
+  }
+  firstGoal(0, in_hub, candidates);
   EXPECT_FALSE(in_hub);
-  EXPECT_TRUE(has_candidates);
-  firstGoal(5, in_hub, has_candidates);  // four neighbours: no hub at five
+  ASSERT_FALSE(candidates.empty());
+  for (const Vec2& c : candidates) EXPECT_LT(c.y(), 1.5) << c.transpose();  // the hallway's own: its end
+  firstGoal(5, in_hub, candidates);  // four neighbours: no hub at five
   EXPECT_FALSE(in_hub);
 
   // A room off the hallway, with one neighbour, is no hub.

@@ -40,6 +40,7 @@ void SemanticExplorerOptions::validate() const {
   if (max_iterations_per_call < 1) throw OptionError("semantic.max_iterations_per_call must be >= 1");
   if (hub_min_neighbours < 0) throw OptionError("semantic.hub_min_neighbours must be >= 0");
   if (!finiteAtLeast(next_room_cost_factor, 0.0)) throw OptionError("semantic.next_room_cost_factor must be >= 0");
+  if (!finiteAtLeast(hub_sample_radius_m, 0.0)) throw OptionError("semantic.hub_sample_radius_m must be >= 0");
 }
 
 std::vector<ParameterRef> SemanticExplorerOptions::parameters() {
@@ -70,7 +71,9 @@ std::vector<ParameterRef> SemanticExplorerOptions::parameters() {
       {"next_room_cost_factor", &next_room_cost_factor,
        "C weighs this many times w_c when choosing the next room (in a hub, or no point left in the room); 1 = off"},
       {"hub_min_neighbours", &hub_min_neighbours,
-       "a room with this many neighbouring rooms is a hub: no P_sem, no +-A there; 0 = off"},
+       "a room with this many neighbouring rooms is a hub: no +-A there, P_sem near the robot; 0 = off"},
+      {"hub_sample_radius_m", &hub_sample_radius_m,
+       "in a hub, P_sem is drawn from the frontier cells in the square of this half-side around the robot; 0 = none [m]"},
   };
 }
 
@@ -269,13 +272,24 @@ void SemanticExplorer::updateRoom(const ExplorationInput& input) {
 void SemanticExplorer::collectCandidates(const ExplorationInput& input) {
   candidates_.clear();
   const GridGeometry& g = input.grid.geometry();
-  if (room_ == 0 || input.semantic == nullptr || hub_) return;  // a hub has no P_sem
-  const SemanticRegion* region = input.semantic->region(room_);
-  if (region == nullptr || region->polygon_m.empty()) return;
-  Vec2 lo = region->polygon_m.front(), hi = lo;
-  for (const Vec2& v : region->polygon_m) {
-    lo = lo.cwiseMin(v);
-    hi = hi.cwiseMax(v);
+  if (room_ == 0 || input.semantic == nullptr) return;
+  // In a hub, P_sem is any frontier cell near the robot, whatever its room (see the header).
+  const bool local = hub_;
+  if (local && options_.hub_sample_radius_m <= 0.0) return;
+  Vec2 lo, hi;
+  if (local) {
+    const Vec2 r(options_.hub_sample_radius_m, options_.hub_sample_radius_m);
+    lo = input.robot.position() - r;
+    hi = input.robot.position() + r;
+  } else {
+    const SemanticRegion* region = input.semantic->region(room_);
+    if (region == nullptr || region->polygon_m.empty()) return;
+    lo = region->polygon_m.front();
+    hi = lo;
+    for (const Vec2& v : region->polygon_m) {
+      lo = lo.cwiseMin(v);
+      hi = hi.cwiseMax(v);
+    }
   }
   const double pad = options_.label_search_m + g.resolution_m();
   const Cell a = g.cellOf(lo - Vec2(pad, pad));
@@ -315,7 +329,7 @@ void SemanticExplorer::collectCandidates(const ExplorationInput& input) {
       }
       if (unknownIn(x, y) * cell_m2 < options_.min_unknown_m2) continue;
       const Vec2 p = g.centerOf(Cell{x, y});
-      if (roomOf(input, p) == room_) candidates_.push_back(p);
+      if (local || roomOf(input, p) == room_) candidates_.push_back(p);
     }
   }
 }

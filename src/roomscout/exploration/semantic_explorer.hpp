@@ -8,7 +8,8 @@
 // eta_m, iterations_per_s per simulated second). Each iteration draws its sampling point P_sap:
 // - with probability 1 / (1 + k t): P_rad, uniform over the bounding box of the known cells;
 // - with probability k t / (1 + k t): P_sem, drawn uniformly among the room's frontier cells
-//   (known-free, non-lethal cells with an unknown 4-neighbour inside the current room);
+//   (known-free, non-lethal cells with an unknown 4-neighbour inside the current room; in a
+//   hallway, those near the robot, see Hubs below);
 // t is the time since the robot's room last changed. When the room has no frontier cell left,
 // P_rad is used. An extension toward P_sem takes the full step eta_m along its direction, so
 // the edge crosses the frontier instead of stopping on its free side. An edge that reaches
@@ -68,13 +69,19 @@
 //
 // Hubs. A room the semantic map gives hub_min_neighbours or more neighbouring rooms (a hallway,
 // a corridor with doors along it) is a place to pass through, not to finish: while the robot
-// is in one, P_sem is not drawn and no point gets +-A, so the plain score picks the next room,
-// mostly the nearest one seen through a door. Finishing the hallway first (to its far end)
+// is in one, no point gets +-A, so the plain score picks the next room, mostly the nearest
+// one seen through a door. Finishing the hallway first (to its far end)
 // left the rooms along it half seen, to be fetched at the end (small_house seed 1 at 80 %
 // explored had four such rooms; mmpf none). With the rule (4 neighbours) L98 is 121.6 /
 // 257.5 / 623.4 m against 120.6 / 289.9 / 632.9 in the three built-in worlds (10 seeds) and
 // 52.0 against 53.4 m on the HouseExpo plans; revisits 11.1 / 25.9 / 65.1 against 10.8 /
-// 27.9 / 56.5 (docs/semantic_tuning.md, session 16).
+// 27.9 / 56.5 (docs/semantic_tuning.md, session 16). P_sem in a hub (session 19) is a frontier
+// cell of any room in the square of half-side hub_sample_radius_m around the robot, so that the
+// tree reaches into the rooms beside the hallway first: uniform samples there mostly fed far
+// rooms seen down the hallway, and the robot left near ones for later. With 4 m, L98 117.6 /
+// 245.8 / 576.1 m against 117.3 / 248.3 / 605.9 without (seeds 1-10), T98 -0 / -1 / -5 %,
+// revisits 10.7 / 29.1 / 66.8 against 11.6 / 31.9 / 69.5; HouseExpo seeds 1-3 51.10 against
+// 51.16 m; 2 and 8 m were longer in the small house (+5 %), 6 m about as 4.
 //
 // Next room. When the robot chooses where to go next, in a hub or because its room has no
 // point left but slivers, every point is outside its room and S is the plain gain-cost
@@ -139,10 +146,13 @@ struct SemanticExplorerOptions {
                                        ///< the end phase [s]
   int max_iterations_per_call = 20000; ///< cap on owed iterations run in one call
   int hub_min_neighbours = 4;          ///< a room with this many neighbouring rooms is a hub:
-                                       ///< there no P_sem and no +-A; 0 = off
+                                       ///< there no +-A and P_sem near the robot; 0 = off
   double next_room_cost_factor = 3.0;  ///< choosing the next room (in a hub, or no point
                                        ///< left in the current room but slivers): C weighs
                                        ///< this many times w_c; 1 = off
+  double hub_sample_radius_m = 4.0;    ///< in a hub, P_sem is drawn from the frontier cells
+                                       ///< (of any room) in the square of this half-side
+                                       ///< around the robot; 0 = no P_sem in a hub [m]
 
   void validate() const;
   std::vector<ParameterRef> parameters();
@@ -177,7 +187,8 @@ class SemanticExplorer final : public ExplorationStrategy {
     Vec2 anchor;  ///< last known point of the edge before it [m]
   };
   const std::vector<FrontierPoint>& frontierPoints() const { return points_; }
-  /// The current room's frontier cells P_sem is drawn from (as of the last decide()).
+  /// The frontier cells P_sem is drawn from (as of the last decide()): the current room's, or
+  /// in a hub those near the robot.
   const std::vector<Vec2>& semanticCandidates() const { return candidates_; }
   int currentRoom() const { return room_; }
   /// The current room is a hub (hub_min_neighbours), as of the last decide().
