@@ -144,6 +144,62 @@ TEST_F(BenchCliTest, JobsDoNotChangeResultsAndSeedOneKeepsItsOutputs) {
     EXPECT_TRUE(fs::exists(dir_ / "j1" / f)) << f;
 }
 
+TEST_F(BenchCliTest, RandomStartsAreTheSameForEveryMethodAndNotMixedWithWorldStarts) {
+  const fs::path cfg = dir_ / "short.yaml";
+  std::ofstream(cfg) << "episode:\n  max_time_s: 20\n";
+  const fs::path fixed = dir_ / "fixed", random = dir_ / "random";
+  const std::string args = "bench --worlds " + world() + " --methods nearest_frontier,rrt --seeds 2 --config " +
+                           cfg.string() + " --out ";
+  auto [code, output] = run(args + fixed.string());
+  ASSERT_EQ(code, 0) << output;
+  std::tie(code, output) = run(args + random.string() + " --random-starts");
+  ASSERT_EQ(code, 0) << output;
+
+  std::map<std::string, nlohmann::json> start;  // by key
+  for (const nlohmann::json& r : records(fixed)) {
+    EXPECT_EQ(r["start_mode"], "world");
+    start[key(r)] = r["start"];
+  }
+  const nlohmann::json world_start = start.at("rooms/rrt/1");
+  EXPECT_EQ(start.at("rooms/rrt/2"), world_start);
+  for (const nlohmann::json& r : records(random)) {
+    EXPECT_EQ(r["start_mode"], "random");
+    ASSERT_TRUE(r["start"].is_array() && r["start"].size() == 3u) << r["start"];
+    // The recorded start is where the trajectory begins.
+    EXPECT_EQ(r["trajectory"][0][1], r["start"][0]);
+    EXPECT_EQ(r["trajectory"][0][2], r["start"][1]);
+    start[key(r) + "/random"] = r["start"];
+  }
+  // The same seed starts both methods at the same pose; seeds differ from each other and from
+  // the world's start.
+  EXPECT_EQ(start.at("rooms/rrt/1/random"), start.at("rooms/nearest_frontier/1/random"));
+  EXPECT_EQ(start.at("rooms/rrt/2/random"), start.at("rooms/nearest_frontier/2/random"));
+  EXPECT_NE(start.at("rooms/rrt/1/random"), start.at("rooms/rrt/2/random"));
+  EXPECT_NE(start.at("rooms/rrt/1/random"), world_start);
+
+  // One results file holds one kind of start: resuming either into the other is an error
+  // naming the file.
+  std::tie(code, output) = run(args + fixed.string() + " --random-starts");
+  EXPECT_EQ(code, 2) << output;
+  EXPECT_NE(output.find((fixed / "results.jsonl").string()), std::string::npos) << output;
+  EXPECT_NE(output.find("start_mode 'world'"), std::string::npos) << output;
+  std::tie(code, output) = run(args + random.string());
+  EXPECT_EQ(code, 2) << output;
+  EXPECT_NE(output.find("start_mode 'random'"), std::string::npos) << output;
+  EXPECT_EQ(records(fixed).size(), 4u);
+  EXPECT_EQ(records(random).size(), 4u);
+
+  // The report says so, and plans an oracle tour from each start (two starts: two tours).
+  std::tie(code, output) = run("report " + random.string());
+  ASSERT_EQ(code, 0) << output;
+  std::ifstream in(random / "table1.md");
+  std::stringstream table;
+  table << in.rdbuf();
+  EXPECT_NE(table.str().find("Every episode started at a pose drawn from its seed"), std::string::npos);
+  EXPECT_TRUE(std::regex_search(table.str(), std::regex(R"(\| tiny \(1 world\) \| 1/1 \| [0-9.]+ ± [0-9.]+ \|)")))
+      << table.str();
+}
+
 TEST_F(BenchCliTest, ShardsPartitionTheEpisodesAndReportMergesThem) {
   const std::string args =
       "bench --worlds " + world() + " --methods nearest_frontier,mmpf --seeds 3 --jobs 2 --out ";

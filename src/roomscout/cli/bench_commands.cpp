@@ -95,6 +95,7 @@ struct BenchArgs {
   std::optional<double> max_time_s;
   std::string pcd_format = "binary_compressed";
   double pcd_precision_m = 0.005;
+  bool random_starts = false;
 };
 
 int runBenchCommand(const BenchArgs& args) {
@@ -102,6 +103,7 @@ int runBenchCommand(const BenchArgs& args) {
   options.worlds = experiment::splitList(args.worlds);
   options.methods = experiment::splitList(args.methods);
   options.seeds = args.seeds;
+  options.random_starts = args.random_starts;
   options.jobs = args.jobs;
   options.out = args.out;
   if (!args.shard.empty()) options.shard = experiment::parseShard(args.shard);
@@ -154,6 +156,8 @@ Subcommand addBenchCommand(CLI::App& app) {
   cmd->add_option("--shard", args->shard,
                   "run only slice I of N of the sorted episode list (I/N, 1-based)");
   cmd->add_option("--config", args->config, "YAML file of options, grouped as in metrics.json");
+  cmd->add_flag("--random-starts", args->random_starts,
+                "start each seed at a pose drawn from it (the same for every method) instead of the world's start");
   cmd->add_option("--max-time", args->max_time_s, "simulated time limit of each episode [s]");
   cmd->add_option("--pcd-format", args->pcd_format,
                   "pointcloud.pcd encoding: ascii, binary, binary_compressed")

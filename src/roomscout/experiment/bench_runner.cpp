@@ -18,6 +18,7 @@
 #include "roomscout/experiment/results_file.hpp"
 #include "roomscout/io/atomic_file.hpp"
 #include "roomscout/io/world_source.hpp"
+#include "roomscout/sim/start_pose.hpp"
 #include "roomscout/sim/world_model.hpp"
 
 namespace roomscout::experiment {
@@ -30,25 +31,39 @@ double secondsSince(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-/// A world's model, built by the first episode that needs it and released after the last.
+/// A world's model, built by the first episode that needs it and released after the last;
+/// with random starts also one model per seed, started where randomStartPose() puts it.
 struct WorldSlot {
   const BenchWorld* world = nullptr;
   std::mutex mutex;
   std::shared_ptr<const sim::WorldModel> model;
+  std::map<std::uint64_t, std::shared_ptr<const sim::WorldModel>> started;  ///< by seed
   std::size_t pending = 0;  ///< episodes of this run still to finish on it
 
-  std::shared_ptr<const sim::WorldModel> acquire(const sim::WorldModelOptions& options) {
+  std::shared_ptr<const sim::WorldModel> acquire(const sim::WorldModelOptions& options, bool random_start,
+                                                 std::uint64_t seed) {
     const std::lock_guard<std::mutex> lock(mutex);
     if (!model) {
       sim::World w = io::loadWorld(world->spec);
       w.name = world->name;  // a world file is named by its stem in a bench
       model = std::make_shared<const sim::WorldModel>(w, options);
     }
-    return model;
+    if (!random_start) return model;
+    std::shared_ptr<const sim::WorldModel>& m = started[seed];
+    if (!m) {
+      sim::World w = model->world();
+      w.start = sim::randomStartPose(*model, seed);
+      w.start_given = true;
+      m = std::make_shared<const sim::WorldModel>(w, options);
+    }
+    return m;
   }
   void release() {
     const std::lock_guard<std::mutex> lock(mutex);
-    if (--pending == 0) model.reset();
+    if (--pending == 0) {
+      model.reset();
+      started.clear();
+    }
   }
 };
 
@@ -101,6 +116,18 @@ BenchSummary runBench(const BenchOptions& options,
 
   io::ensureWritableDirectory(options.out);
   ResultsFile results(options.out / "results.jsonl");
+  // Episodes from the worlds' starts and from random ones are different experiments that
+  // share keys: one results file holds one kind.
+  const std::string start_mode = options.random_starts ? "random" : "world";
+  forEachRecord(results.path(), [&](const nlohmann::json& record, const std::string& where) {
+    const auto it = record.find("start_mode");
+    const std::string mode = it == record.end() ? "world" : it->is_string() ? it->get<std::string>() : it->dump();
+    if (mode != start_mode) {
+      throw OptionError(where + ": recorded with start_mode '" + mode + "', this bench uses '" + start_mode +
+                        "' (" + (options.random_starts ? "--random-starts" : "no --random-starts") +
+                        "): use another --out");
+    }
+  });
   const fs::path scratch_root = options.out / ".scratch";
   std::vector<EpisodeKey> pending;
   for (const EpisodeKey& k : plan) {
@@ -155,14 +182,15 @@ BenchSummary runBench(const BenchOptions& options,
       bool recorded = false;
       try {
         EpisodeSetup setup = makeEpisodeSetup(key.method, key.seed, options.settings);
-        const std::shared_ptr<const sim::WorldModel> model = slot.acquire(setup.config.world);
+        const std::shared_ptr<const sim::WorldModel> model =
+            slot.acquire(setup.config.world, options.random_starts, key.seed);
         acquired = true;
         if (!keep_outputs) fs::remove_all(dir);
         const RecordedEpisode episode = runRecordedEpisode(*model, setup, options.settings, dir);
         slot.release();
         acquired = false;
         const RecordContext context{version, host, utcTimestamp(),
-                                    keep_outputs ? relative.generic_string() : ""};
+                                    keep_outputs ? relative.generic_string() : "", start_mode};
         results.append(makeResultRecord(*slot.world, episode, context));
         recorded = true;
       } catch (...) {

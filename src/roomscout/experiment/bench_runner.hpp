@@ -24,6 +24,9 @@ struct BenchOptions {
   std::filesystem::path out;         ///< bench directory: results.jsonl, runs/, tables
   Shard shard;                       ///< the slice of the episode list this process runs
   RunSettings settings;              ///< config file, time limit, PCD options of every episode
+  bool random_starts = false;        ///< each seed starts where sim::randomStartPose() puts it
+                                     ///< (the same pose for every method); false: the world's
+                                     ///< own start. A results file holds one kind only.
 };
 
 /// How far a bench has come, for a progress display.

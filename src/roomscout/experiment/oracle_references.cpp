@@ -53,7 +53,17 @@ OracleReference planFor(const std::string& spec, const std::string& setup) {
   if (!setup.empty()) applyOptions(config.groups(), nlohmann::json::parse(setup));
   config.resolve();
   config.validate();
-  const sim::WorldModel model(io::loadWorld(spec), config.world);
+  sim::World world = io::loadWorld(spec);
+  if (!setup.empty()) {
+    // A bench with random starts records each episode's start (see readWorldAndOptions).
+    const nlohmann::json parsed = nlohmann::json::parse(setup);
+    if (parsed.contains("start")) {
+      const nlohmann::json& start = parsed["start"];
+      world.start = Pose2{start[0].get<double>(), start[1].get<double>(), start[2].get<double>()};
+      world.start_given = true;
+    }
+  }
+  const sim::WorldModel model(world, config.world);
   const sim::OracleTour tour = sim::planOracleTour(model, sim::oracleTourOptionsFor(config));
   return {tour.length_m, tour.coverage, tour.viewpointCount()};
 }

@@ -131,13 +131,25 @@ void readWorldAndOptions(const nlohmann::json& record, const std::string& where,
   } else if (e.world_group == "builtin" && io::isBuiltinWorld(e.key.world)) {
     e.world_spec = e.key.world;
   }
+  nlohmann::json setup = nlohmann::json::object();
   if (record.contains("options") && record["options"].is_object()) {
-    nlohmann::json setup = nlohmann::json::object();
     for (const char* group : {"robot", "world", "laser", "mapping", "costmap"}) {
       if (record["options"].contains(group)) setup[group] = record["options"][group];
     }
-    e.world_setup = setup.dump();
   }
+  // A random start is part of the world the oracle tour is planned in.
+  const auto mode = record.find("start_mode");
+  if (mode != record.end() && !mode->is_string()) throw InputError(where, "'start_mode' must be a string");
+  if (mode != record.end() && *mode == "random") {
+    const nlohmann::json& start = record.contains("start") ? record["start"] : nlohmann::json();
+    if (!start.is_array() || start.size() != 3 ||
+        !std::all_of(start.begin(), start.end(), [](const nlohmann::json& v) { return v.is_number(); })) {
+      throw InputError(where, "'start' must be [x, y, yaw] when 'start_mode' is 'random'");
+    }
+    setup["start"] = start;
+  }
+  if (!setup.empty()) e.world_setup = setup.dump();
+  e.random_start = setup.contains("start");
 }
 
 }  // namespace
@@ -266,13 +278,15 @@ Report buildReport(const ResultSet& results) {
     std::vector<double> storage_kb, median_s, p95_s;
   };
   std::map<std::pair<std::string, std::string>, MapSamples> map_cells;
-  // row -> world -> its oracle (the first episode's)
-  std::map<std::string, std::map<std::string, OracleReference>> oracles;
+  // row -> (world, world setup) -> its oracle: one per world, or with random starts one per
+  // world and start
+  std::map<std::string, std::map<std::pair<std::string, std::string>, OracleReference>> oracles;
   const std::vector<std::string>& types = mapTypes();
 
   for (const EpisodeSummary& e : results.episodes) {
     const std::string row = rowNameOf(e);
     const bool is_group = e.world_group != "builtin";
+    if (e.random_start) ++report.random_start_episodes;
     auto& r = rows[row];
     r.first = is_group;
     r.second.insert(e.key.world);
@@ -288,7 +302,7 @@ Report buildReport(const ResultSet& results) {
     o.first.emplace(e.exploration_rate, e.t98_s, e.l98_m);
     ++o.second;
     if (e.oracle) {
-      oracles[row].emplace(e.key.world, *e.oracle);
+      oracles[row].emplace(std::pair{e.key.world, e.world_setup}, *e.oracle);
       if (e.l98_m && e.oracle->length_m > 0.0) c.ratio.push_back(*e.l98_m / e.oracle->length_m);
     }
     auto& built = report.map_types[e.key.method];
@@ -342,9 +356,11 @@ Report buildReport(const ResultSet& results) {
     s.update_median_s = Stat::of(c.median_s);
     s.update_p95_s = Stat::of(c.p95_s);
   }
-  for (const auto& [row, worlds] : oracles) {
+  for (const auto& [row, tours] : oracles) {
     std::vector<double> length, coverage, viewpoints;
-    for (const auto& [world, o] : worlds) {
+    std::set<std::string> worlds;
+    for (const auto& [world, o] : tours) {
+      worlds.insert(world.first);
       length.push_back(o.length_m);
       coverage.push_back(o.coverage);
       viewpoints.push_back(static_cast<double>(o.viewpoints));
@@ -373,6 +389,16 @@ std::vector<std::string> Report::methodsSameEverySeed() const {
     if (several && same) out.push_back(method);
   }
   return out;
+}
+
+std::string startPosesLine(const Report& report) {
+  if (report.random_start_episodes == 0) return {};
+  const std::string n = report.random_start_episodes == report.episodes
+                            ? std::string("Every episode")
+                            : std::to_string(report.random_start_episodes) + " of " +
+                                  std::to_string(report.episodes) + " episodes";
+  return n + " started at a pose drawn from its seed (bench --random-starts: the same pose for every method, "
+             "recorded as `start`), not at its world's start; each has its own oracle tour.";
 }
 
 std::string sameEverySeedLine(const Report& report) {
@@ -412,7 +438,8 @@ std::string oracleDescription() {
          "ordered by a TSP heuristic over geodesic distances from the start), planned on the "
          "ground truth with the episodes' options (map resolution, robot radius + safety "
          "margin, laser range). A reference, not a bound: what the laser sees between "
-         "viewpoints is not counted. For a group, mean ± sd over its worlds.";
+         "viewpoints is not counted. For a group, mean ± sd over its worlds (with random "
+         "starts, over its worlds and starts).";
 }
 
 std::string table2Description() {
@@ -577,8 +604,10 @@ plots::HtmlTable table3Cells(const Report& report) {
 
 std::string table1Markdown(const Report& report) {
   const std::string same = sameEverySeedLine(report);
+  const std::string starts = startPosesLine(report);
   const std::string intro = "# Table I: exploration time and trajectory length\n\n" +
                             table1Description() + "\n\n" + (same.empty() ? "" : same + "\n\n") +
+                            (starts.empty() ? "" : starts + "\n\n") +
                             sourcesLine(report) + ".\n\n";
   if (report.rows.empty()) return intro + "No episodes.\n";
   plots::HtmlTable table = table1Cells(report);

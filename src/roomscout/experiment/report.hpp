@@ -61,8 +61,10 @@ struct EpisodeSummary {
   /// name when it is a built-in world; else empty.
   std::string world_spec;
   /// The record's option groups that shape the world model and the oracle tour (robot,
-  /// world, laser, mapping, costmap) as compact JSON; empty when the record has no options.
+  /// world, laser, mapping, costmap) and, for a random start (start_mode "random"), "start":
+  /// [x, y, yaw], as compact JSON; empty when the record has neither.
   std::string world_setup;
+  bool random_start = false;  ///< the record's start_mode is "random" (bench --random-starts)
   /// The folder with the full outputs of `explore` (seed 1 of a bench): the record's
   /// `outputs` against its results file's folder; empty when the record has none.
   std::filesystem::path outputs_dir;
@@ -123,10 +125,11 @@ struct MethodStats {
   bool same_every_seed = false;
 };
 
-/// The oracle tour lengths of a row's worlds (one value per world, the first episode's).
+/// The oracle tour lengths of a row's worlds (one value per world, or with random starts per
+/// world and start).
 struct OracleRowStats {
   std::size_t worlds = 0;  ///< worlds of the row with an oracle
-  Stat length_m;           ///< over those worlds
+  Stat length_m;           ///< over those tours
   Stat coverage;
   Stat viewpoints;
 };
@@ -147,6 +150,7 @@ struct Report {
   std::map<std::string, std::array<bool, 4>> map_types;  ///< method -> maps recorded (Table II)
   std::map<std::string, OracleRowStats> oracle;  ///< by row; rows whose worlds have an oracle
   std::size_t episodes = 0;
+  std::size_t random_start_episodes = 0;  ///< episodes started at a pose drawn from their seed
   std::vector<std::filesystem::path> files;
 
   /// True when some episode has an oracle: Table I then shows L98 / oracle.
@@ -181,6 +185,8 @@ std::string table3Description();
 std::string sourcesLine(const Report& report);
 /// Names the methods of methodsSameEverySeed() and why their sd is 0; empty when none.
 std::string sameEverySeedLine(const Report& report);
+/// The sentence saying that (some) episodes started at poses drawn from their seed, or empty.
+std::string startPosesLine(const Report& report);
 
 /// The row an episode belongs to: its world when built in, else its world's group.
 std::string rowNameOf(const EpisodeSummary& episode);

@@ -38,6 +38,9 @@ plots::HtmlPage reportPage(const Report& report, const std::vector<ReportFigure>
   if (const std::string same = sameEverySeedLine(report); !same.empty()) {
     t1.blocks.push_back(plots::HtmlParagraph{plain(same)});
   }
+  if (const std::string starts = startPosesLine(report); !starts.empty()) {
+    t1.blocks.push_back(plots::HtmlParagraph{plain(starts)});
+  }
   t1.blocks.push_back(plainTable(table1Cells(report)));
   t1.blocks.push_back(plots::HtmlParagraph{plain(revisitsDescription())});
   t1.blocks.push_back(plainTable(revisitsCells(report)));

@@ -50,6 +50,11 @@ nlohmann::json makeResultRecord(const BenchWorld& world, const RecordedEpisode& 
                           rounded(s.pose.yaw_rad, 4)});
     next_s = s.time_s + trajectory_period_s;
   }
+  record["start_mode"] = context.start_mode;
+  if (!samples.empty()) {
+    const Pose2& p = samples.front().pose;
+    record["start"] = {rounded(p.x_m, 4), rounded(p.y_m, 4), rounded(p.yaw_rad, 4)};
+  }
   record["trajectory_columns"] = {"time_s", "x_m", "y_m", "yaw_rad"};
   record["trajectory"] = std::move(trajectory);
 

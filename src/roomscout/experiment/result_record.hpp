@@ -28,11 +28,13 @@ struct RecordContext {
   std::string host;         ///< hostName()
   std::string recorded_at;  ///< utcTimestamp()
   std::string outputs;      ///< the run's directory relative to the bench directory, or empty
+  std::string start_mode = "world";  ///< "world": the world's start; "random": randomStartPose()
 };
 
 /// The record of `episode` of `world`: every key of metrics.json (with `world` set to the
 /// bench name of the world), plus schema, world_group, version, host, recorded_at, outputs,
-/// trajectory (decimated to one pose per `trajectory_period_s`), map_stats and file_bytes.
+/// start_mode, start (the first pose: x, y [m], yaw [rad]), trajectory (decimated to one pose
+/// per `trajectory_period_s`), map_stats and file_bytes.
 nlohmann::json makeResultRecord(const BenchWorld& world, const RecordedEpisode& episode,
                                 const RecordContext& context, double trajectory_period_s = 1.0);
 
