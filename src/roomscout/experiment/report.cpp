@@ -359,8 +359,8 @@ Report buildReport(const ResultSet& results) {
   for (const auto& [row, tours] : oracles) {
     std::vector<double> length, coverage, viewpoints;
     std::set<std::string> worlds;
-    for (const auto& [world, o] : tours) {
-      worlds.insert(world.first);
+    for (const auto& [world_and_setup, o] : tours) {
+      worlds.insert(world_and_setup.first);
       length.push_back(o.length_m);
       coverage.push_back(o.coverage);
       viewpoints.push_back(static_cast<double>(o.viewpoints));
@@ -398,7 +398,7 @@ std::string startPosesLine(const Report& report) {
                             : std::to_string(report.random_start_episodes) + " of " +
                                   std::to_string(report.episodes) + " episodes";
   return n + " started at a pose drawn from its seed (bench --random-starts: the same pose for every method, "
-             "recorded as `start`), not at its world's start; each has its own oracle tour.";
+             "recorded as `start`), not at its world's start; its oracle tour starts there too.";
 }
 
 std::string sameEverySeedLine(const Report& report) {
