@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "roomscout/core/errors.hpp"
+#include "roomscout/core/random.hpp"
 
 namespace roomscout {
 
@@ -144,9 +145,8 @@ RrtExtension RrtTree::extend(const OccupancyGrid& grid, const Vec2& sample_m) {
 
 RrtTree::Sampler uniformBoxSampler(const Vec2& min_m, const Vec2& max_m) {
   return [min_m, max_m](std::mt19937_64& rng) {
-    // Our own mapping to [0, 1): the standard distributions differ between libraries.
-    const double u = static_cast<double>(rng() >> 11) * 0x1.0p-53;
-    const double v = static_cast<double>(rng() >> 11) * 0x1.0p-53;
+    const double u = unitDouble(rng);
+    const double v = unitDouble(rng);
     return Vec2(min_m.x() + u * (max_m.x() - min_m.x()), min_m.y() + v * (max_m.y() - min_m.y()));
   };
 }

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "roomscout/core/errors.hpp"
+#include "roomscout/core/random.hpp"
 #include "roomscout/exploration/frontier_cells.hpp"
 #include "roomscout/maps/semantic_map.hpp"
 
@@ -89,10 +90,6 @@ namespace {
 constexpr double kPocketOpening_m = 0.4;
 /// Geodesic C is searched on blocks of this many cells a side (0.1 m at 0.05 m cells).
 constexpr int kBlock = 2;
-
-/// A uniform double in [0, 1) from the generator (our own mapping: the standard distributions
-/// differ between standard libraries, and runs must not).
-double unit(std::mt19937_64& rng) { return static_cast<double>(rng() >> 11) * 0x1.0p-53; }
 
 /// Unknown and occupied areas [m^2] in the square of half-side `half_m` centred on `p`'s cell,
 /// and its frontier cells (free, with an unknown 4-neighbour; the grid's border cells are not
@@ -346,11 +343,11 @@ void SemanticExplorer::grow(const ExplorationInput& input, long iterations) {
   if (point_cells_.size() != g.cellCount()) point_cells_.assign(g.cellCount(), 0);
   for (long n = 0; n < iterations; ++n) {
     Vec2 sample;
-    if (!candidates_.empty() && p_sem > 0.0 && unit(rng_) < p_sem) {
+    if (!candidates_.empty() && p_sem > 0.0 && unitDouble(rng_) < p_sem) {
       // P_sem: a frontier cell of the current room, approached by a full step so that the
       // edge crosses the frontier into unknown space.
       const Vec2 target = candidates_[std::min(candidates_.size() - 1,
-                                               static_cast<std::size_t>(unit(rng_) * candidates_.size()))];
+                                               static_cast<std::size_t>(unitDouble(rng_) * candidates_.size()))];
       const Vec2 from = tree_->node(tree_->nearest(target));
       const Vec2 d = target - from;
       const double len = d.norm();

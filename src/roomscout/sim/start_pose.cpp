@@ -7,6 +7,8 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include "roomscout/core/random.hpp"
+
 namespace roomscout::sim {
 namespace {
 
@@ -14,10 +16,6 @@ namespace {
 /// own start: the costmap's inflation margin and a little more, so that no start lies in a
 /// pocket the planner cannot leave.
 constexpr double kConnectMargin_m = 0.1;
-
-/// A uniform double in [0, 1) (our own mapping: the standard distributions differ between
-/// standard libraries, and runs must not).
-double unit(std::mt19937_64& rng) { return static_cast<double>(rng() >> 11) * 0x1.0p-53; }
 
 }  // namespace
 
@@ -49,9 +47,9 @@ Pose2 randomStartPose(const WorldModel& model, std::uint64_t seed, double min_cl
   }
   if (cells.empty()) return model.start();
   std::mt19937_64 rng(seed ^ 0x9E3779B97F4A7C15ull);
-  const std::size_t pick = std::min(cells.size() - 1, static_cast<std::size_t>(unit(rng) * cells.size()));
+  const std::size_t pick = std::min(cells.size() - 1, static_cast<std::size_t>(unitDouble(rng) * cells.size()));
   const Vec2 p = g.centerOf(cells[pick]);
-  const double yaw = (2.0 * unit(rng) - 1.0) * std::numbers::pi;
+  const double yaw = (2.0 * unitDouble(rng) - 1.0) * std::numbers::pi;
   return Pose2{p.x(), p.y(), yaw};
 }
 
