@@ -119,15 +119,13 @@ BenchSummary runBench(const BenchOptions& options,
   // Episodes from the worlds' starts and from random ones are different experiments that
   // share keys: one results file holds one kind.
   const std::string start_mode = options.random_starts ? "random" : "world";
-  forEachRecord(results.path(), [&](const nlohmann::json& record, const std::string& where) {
-    const auto it = record.find("start_mode");
-    const std::string mode = it == record.end() ? "world" : it->is_string() ? it->get<std::string>() : it->dump();
+  for (const auto& [mode, where] : results.startModes()) {
     if (mode != start_mode) {
       throw OptionError(where + ": recorded with start_mode '" + mode + "', this bench uses '" + start_mode +
                         "' (" + (options.random_starts ? "--random-starts" : "no --random-starts") +
                         "): use another --out");
     }
-  });
+  }
   const fs::path scratch_root = options.out / ".scratch";
   std::vector<EpisodeKey> pending;
   for (const EpisodeKey& k : plan) {

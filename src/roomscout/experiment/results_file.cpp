@@ -78,6 +78,9 @@ ResultsFile::ResultsFile(const std::filesystem::path& path) : path_(path) {
   if (std::filesystem::exists(path, ec)) {
     scan = forEachRecord(path, [&](const nlohmann::json& record, const std::string& where) {
       recorded_.insert(recordKey(record, where));
+      const auto mode = record.find("start_mode");
+      start_modes_.emplace(mode == record.end() ? "world" : mode->is_string() ? mode->get<std::string>() : mode->dump(),
+                           where);
     });
   }
   fd_ = ::open(path.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0666);

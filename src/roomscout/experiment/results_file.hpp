@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <filesystem>
 #include <functional>
+#include <map>
 #include <mutex>
 #include <set>
 #include <string>
@@ -54,6 +55,9 @@ class ResultsFile {
   const std::filesystem::path& path() const { return path_; }
   /// Keys recorded before this bench started.
   const std::set<EpisodeKey>& recorded() const { return recorded_; }
+  /// The records' start modes ("world" for records without one), each with the "path:line"
+  /// of its first record.
+  const std::map<std::string, std::string>& startModes() const { return start_modes_; }
   /// True when the file ended in a truncated line that was removed.
   bool droppedTruncatedLine() const { return dropped_truncated_; }
 
@@ -64,6 +68,7 @@ class ResultsFile {
  private:
   std::filesystem::path path_;
   std::set<EpisodeKey> recorded_;
+  std::map<std::string, std::string> start_modes_;
   bool dropped_truncated_ = false;
   int fd_ = -1;
   std::mutex mutex_;

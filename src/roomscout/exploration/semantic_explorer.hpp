@@ -61,8 +61,9 @@
 // current room that it has not come close to, see decide()), it visits those reachable
 // frontier cells, nearest first, skipping the ones that open onto a pocket, and ends when none
 // is left; tree points no longer become goals then (points found on a wall the laser only
-// grazed restarted the idling every idle_end_s and one HouseExpo plan never ended). The tree misses wedges of rooms seen
-// from their doors: a HouseExpo plan ended at 97.8 % without the phase; with it all 150
+// grazed restarted the idling every idle_end_s and one HouseExpo plan never ended). The tree
+// misses wedges of rooms seen from their doors: a HouseExpo plan ended at 97.8 % without the
+// phase; with it all 150
 // HouseExpo episodes of seeds 1-3 reach 98 % (149 before), while T98 and L98 in the built-in
 // worlds do not change (the phase begins after T98 there; T_done +2 / +22 / +8 %).
 //
