@@ -148,8 +148,9 @@ TEST_F(BenchCliTest, RandomStartsAreTheSameForEveryMethodAndNotMixedWithWorldSta
   const fs::path cfg = dir_ / "short.yaml";
   std::ofstream(cfg) << "episode:\n  max_time_s: 20\n";
   const fs::path fixed = dir_ / "fixed", random = dir_ / "random";
-  const std::string args = "bench --worlds " + world() + " --methods nearest_frontier,rrt --seeds 2 --config " +
-                           cfg.string() + " --out ";
+  const std::string args = "bench --worlds " + world() +
+                           " --methods nearest_frontier,rrt --seeds 2 --config " + cfg.string() +
+                           " --out ";
   auto [code, output] = run(args + fixed.string());
   ASSERT_EQ(code, 0) << output;
   std::tie(code, output) = run(args + random.string() + " --random-starts");
@@ -195,8 +196,10 @@ TEST_F(BenchCliTest, RandomStartsAreTheSameForEveryMethodAndNotMixedWithWorldSta
   std::ifstream in(random / "table1.md");
   std::stringstream table;
   table << in.rdbuf();
-  EXPECT_NE(table.str().find("Every episode started at a pose drawn from its seed"), std::string::npos);
-  EXPECT_TRUE(std::regex_search(table.str(), std::regex(R"(\| tiny \(1 world\) \| 1/1 \| [0-9.]+ ± [0-9.]+ \|)")))
+  EXPECT_NE(table.str().find("Every episode started at a pose drawn from its seed"),
+            std::string::npos);
+  EXPECT_TRUE(std::regex_search(
+      table.str(), std::regex(R"(\| tiny \(1 world\) \| 1/1 \| [0-9.]+ ± [0-9.]+ \|)")))
       << table.str();
 }
 

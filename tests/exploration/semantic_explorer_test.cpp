@@ -238,8 +238,9 @@ TEST(SemanticExplorerTest, InAHallwayTakesTheRoomBesideItInsteadOfTheHallwaysFar
   firstGoal(0, in_hub, candidates);
   EXPECT_FALSE(in_hub);
   ASSERT_FALSE(candidates.empty());
-  for (const Vec2& c : candidates) EXPECT_LT(c.y(), 1.5) << c.transpose();  // the hallway's own: its end
-  firstGoal(5, in_hub, candidates);  // four neighbours: no hub at five
+  for (const Vec2& c : candidates)
+    EXPECT_LT(c.y(), 1.5) << c.transpose();  // the hallway's own: its end
+  firstGoal(5, in_hub, candidates);          // four neighbours: no hub at five
   EXPECT_FALSE(in_hub);
 
   // A room off the hallway, with one neighbour, is no hub.

@@ -157,7 +157,8 @@ Subcommand addBenchCommand(CLI::App& app) {
                   "run only slice I of N of the sorted episode list (I/N, 1-based)");
   cmd->add_option("--config", args->config, "YAML file of options, grouped as in metrics.json");
   cmd->add_flag("--random-starts", args->random_starts,
-                "start each seed at a pose drawn from it (the same for every method) instead of the world's start");
+                "start each seed at a pose drawn from it (the same for every method) instead of "
+                "the world's start");
   cmd->add_option("--max-time", args->max_time_s, "simulated time limit of each episode [s]");
   cmd->add_option("--pcd-format", args->pcd_format,
                   "pointcloud.pcd encoding: ascii, binary, binary_compressed")

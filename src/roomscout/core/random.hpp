@@ -7,6 +7,8 @@
 namespace roomscout {
 
 /// A uniform double in [0, 1) from the top 53 bits of one draw.
-inline double unitDouble(std::mt19937_64& rng) { return static_cast<double>(rng() >> 11) * 0x1.0p-53; }
+inline double unitDouble(std::mt19937_64& rng) {
+  return static_cast<double>(rng() >> 11) * 0x1.0p-53;
+}
 
 }  // namespace roomscout

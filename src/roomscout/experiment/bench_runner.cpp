@@ -40,8 +40,8 @@ struct WorldSlot {
   std::map<std::uint64_t, std::shared_ptr<const sim::WorldModel>> started;  ///< by seed
   std::size_t pending = 0;  ///< episodes of this run still to finish on it
 
-  std::shared_ptr<const sim::WorldModel> acquire(const sim::WorldModelOptions& options, bool random_start,
-                                                 std::uint64_t seed) {
+  std::shared_ptr<const sim::WorldModel> acquire(const sim::WorldModelOptions& options,
+                                                 bool random_start, std::uint64_t seed) {
     const std::lock_guard<std::mutex> lock(mutex);
     if (!model) {
       sim::World w = io::loadWorld(world->spec);
@@ -121,8 +121,9 @@ BenchSummary runBench(const BenchOptions& options,
   const std::string start_mode = options.random_starts ? "random" : "world";
   for (const auto& [mode, where] : results.startModes()) {
     if (mode != start_mode) {
-      throw OptionError(where + ": recorded with start_mode '" + mode + "', this bench uses '" + start_mode +
-                        "' (" + (options.random_starts ? "--random-starts" : "no --random-starts") +
+      throw OptionError(where + ": recorded with start_mode '" + mode + "', this bench uses '" +
+                        start_mode + "' (" +
+                        (options.random_starts ? "--random-starts" : "no --random-starts") +
                         "): use another --out");
     }
   }

@@ -139,11 +139,13 @@ void readWorldAndOptions(const nlohmann::json& record, const std::string& where,
   }
   // A random start is part of the world the oracle tour is planned in.
   const auto mode = record.find("start_mode");
-  if (mode != record.end() && !mode->is_string()) throw InputError(where, "'start_mode' must be a string");
+  if (mode != record.end() && !mode->is_string())
+    throw InputError(where, "'start_mode' must be a string");
   if (mode != record.end() && *mode == "random") {
     const nlohmann::json& start = record.contains("start") ? record["start"] : nlohmann::json();
     if (!start.is_array() || start.size() != 3 ||
-        !std::all_of(start.begin(), start.end(), [](const nlohmann::json& v) { return v.is_number(); })) {
+        !std::all_of(start.begin(), start.end(),
+                     [](const nlohmann::json& v) { return v.is_number(); })) {
       throw InputError(where, "'start' must be [x, y, yaw] when 'start_mode' is 'random'");
     }
     setup["start"] = start;
@@ -397,8 +399,10 @@ std::string startPosesLine(const Report& report) {
                             ? std::string("Every episode")
                             : std::to_string(report.random_start_episodes) + " of " +
                                   std::to_string(report.episodes) + " episodes";
-  return n + " started at a pose drawn from its seed (bench --random-starts: the same pose for every method, "
-             "recorded as `start`), not at its world's start; its oracle tour starts there too.";
+  return n +
+         " started at a pose drawn from its seed (bench --random-starts: the same pose for every "
+         "method, recorded as `start`), not at its world's start; its oracle tour starts there "
+         "too.";
 }
 
 std::string sameEverySeedLine(const Report& report) {
@@ -607,8 +611,7 @@ std::string table1Markdown(const Report& report) {
   const std::string starts = startPosesLine(report);
   const std::string intro = "# Table I: exploration time and trajectory length\n\n" +
                             table1Description() + "\n\n" + (same.empty() ? "" : same + "\n\n") +
-                            (starts.empty() ? "" : starts + "\n\n") +
-                            sourcesLine(report) + ".\n\n";
+                            (starts.empty() ? "" : starts + "\n\n") + sourcesLine(report) + ".\n\n";
   if (report.rows.empty()) return intro + "No episodes.\n";
   plots::HtmlTable table = table1Cells(report);
   table.caption.clear();

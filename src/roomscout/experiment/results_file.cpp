@@ -79,7 +79,9 @@ ResultsFile::ResultsFile(const std::filesystem::path& path) : path_(path) {
     scan = forEachRecord(path, [&](const nlohmann::json& record, const std::string& where) {
       recorded_.insert(recordKey(record, where));
       const auto mode = record.find("start_mode");
-      start_modes_.emplace(mode == record.end() ? "world" : mode->is_string() ? mode->get<std::string>() : mode->dump(),
+      start_modes_.emplace(mode == record.end() ? "world"
+                           : mode->is_string()  ? mode->get<std::string>()
+                                                : mode->dump(),
                            where);
     });
   }
