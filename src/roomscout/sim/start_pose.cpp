@@ -23,13 +23,12 @@ Pose2 randomStartPose(const WorldModel& model, std::uint64_t seed, double min_cl
   const GridGeometry& g = model.geometry();
   const int w = g.width(), h = g.height();
   const double connect_m = model.options().robot_radius_m + kConnectMargin_m;
+  const std::vector<float>& clearance = model.clearanceMap_m();
   cv::Mat passable(h, w, CV_8U, cv::Scalar(0));
-  std::vector<float> clearance(static_cast<std::size_t>(w) * h);
   for (int y = 0; y < h; ++y) {
     for (int x = 0; x < w; ++x) {
-      const std::size_t i = static_cast<std::size_t>(y) * w + x;
-      clearance[i] = static_cast<float>(model.clearance_m(g.centerOf(Cell{x, y})));
-      if (clearance[i] >= connect_m) passable.at<std::uint8_t>(y, x) = 255;
+      if (clearance[static_cast<std::size_t>(y) * w + x] >= connect_m)
+        passable.at<std::uint8_t>(y, x) = 255;
     }
   }
   const Cell s = g.cellOf(model.start().position());

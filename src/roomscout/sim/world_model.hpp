@@ -39,6 +39,8 @@ class WorldModel {
 
   /// Distance from a point to the nearest robot-solid raster cell [m] (accurate to a cell).
   double clearance_m(const Vec2& p_m) const;
+  /// The same per raster cell, row-major over geometry().
+  const std::vector<float>& clearanceMap_m() const { return clearance_m_; }
   /// True when the robot disc centred at p_m touches nothing solid.
   bool robotFits(const Vec2& p_m) const { return clearance_m(p_m) >= options_.robot_radius_m; }
 
