@@ -430,6 +430,61 @@ TEST(SemanticExplorerTest, CostsAPointByThePathToItNotTheStraightLine) {
   EXPECT_TRUE(by_line.x() > 4.0 && by_line.y() < 2.5) << "goal " << by_line.transpose();
 }
 
+TEST(SemanticExplorerTest, OfTwoEqualEndsTakesTheOneAhead) {
+  // One room, known free for 2.5 m <= x < 7.5 m, unknown beyond both ends: the robot in the
+  // middle sees two ends alike in gain and cost. The heading term takes the one it faces, so
+  // that the robot does not turn round for a point no better than the one in front of it.
+  for (const std::uint64_t seed : {1u, 2u, 3u}) {
+    for (const double yaw : {0.0, M_PI}) {
+      LabelledGrid w([](int x, int) {
+        return x >= 50 && x < 150 ? std::pair{CellState::kFree, 1}
+                                  : std::pair{CellState::kUnknown, 0};
+      });
+      SemanticExplorerOptions o;
+      o.iterations_per_s = 2000.0;
+      SemanticExplorer s(seed, o);
+      const Pose2 robot{5.0, 3.0, yaw};
+      s.decide({w.grid, w.costmap, robot, 0.0, &w.semantic});
+      const Decision d = s.decide({w.grid, w.costmap, robot, 20.0, &w.semantic});
+      ASSERT_EQ(d.status, Decision::Status::kGoal);
+      bool east = false, west = false;
+      for (const auto& f : s.frontierPoints()) {
+        east = east || f.p.x() > 7.4;
+        west = west || f.p.x() < 2.6;
+      }
+      ASSERT_TRUE(east && west) << "seed " << seed << ": the tree must have found both ends";
+      if (yaw == 0.0) {
+        EXPECT_GT(d.goal_m.x(), 7.4) << "seed " << seed << ": " << d.goal_m.transpose();
+      } else {
+        EXPECT_LT(d.goal_m.x(), 2.6) << "seed " << seed << ": " << d.goal_m.transpose();
+      }
+    }
+  }
+}
+
+TEST(SemanticExplorerTest, KeepsItsGoalWhenTheRobotTurnsAwayFromIt) {
+  // The same corridor. The robot facing east takes the east end; then it faces west (as it
+  // does where its path bends round a wall) and, a replan period later, the west end is no
+  // better than the goal: the heading term is a cost of turning away from the goal the robot
+  // drives to, so the goal itself never pays it and the robot does not swing round.
+  for (const std::uint64_t seed : {1u, 2u, 3u}) {
+    LabelledGrid w([](int x, int) {
+      return x >= 50 && x < 150 ? std::pair{CellState::kFree, 1}
+                                : std::pair{CellState::kUnknown, 0};
+    });
+    SemanticExplorerOptions o;
+    o.iterations_per_s = 2000.0;
+    SemanticExplorer s(seed, o);
+    s.decide({w.grid, w.costmap, Pose2{5.0, 3.0, 0.0}, 0.0, &w.semantic});
+    const Decision first = s.decide({w.grid, w.costmap, Pose2{5.0, 3.0, 0.0}, 20.0, &w.semantic});
+    ASSERT_EQ(first.status, Decision::Status::kGoal);
+    ASSERT_GT(first.goal_m.x(), 7.4) << "seed " << seed << ": " << first.goal_m.transpose();
+    const Decision later = s.decide({w.grid, w.costmap, Pose2{5.0, 3.0, M_PI}, 30.0, &w.semantic});
+    ASSERT_EQ(later.status, Decision::Status::kGoal);
+    EXPECT_GT(later.goal_m.x(), 7.4) << "seed " << seed << ": " << later.goal_m.transpose();
+  }
+}
+
 TEST(SemanticExplorerTest, AblationsAreRegisteredWithTheirDefaults) {
   auto sampling = createStrategy("semantic_sampling_only", 1);
   auto scoring = createStrategy("semantic_score_only", 1);

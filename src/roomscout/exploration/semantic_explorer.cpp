@@ -42,6 +42,8 @@ void SemanticExplorerOptions::validate() const {
   if (hub_min_neighbours < 0) throw OptionError("semantic.hub_min_neighbours must be >= 0");
   if (!finiteAtLeast(next_room_cost_factor, 0.0)) throw OptionError("semantic.next_room_cost_factor must be >= 0");
   if (!finiteAtLeast(hub_sample_radius_m, 0.0)) throw OptionError("semantic.hub_sample_radius_m must be >= 0");
+  if (!finiteAtLeast(heading_weight, 0.0))
+    throw OptionError("semantic.heading_weight must be >= 0");
 }
 
 std::vector<ParameterRef> SemanticExplorerOptions::parameters() {
@@ -75,6 +77,9 @@ std::vector<ParameterRef> SemanticExplorerOptions::parameters() {
        "a room with this many neighbouring rooms is a hub: no +-A there, P_sem near the robot; 0 = off"},
       {"hub_sample_radius_m", &hub_sample_radius_m,
        "in a hub, P_sem is drawn from the frontier cells in the square of this half-side around the robot; 0 = none [m]"},
+      {"heading_weight", &heading_weight,
+       "S -= heading_weight (1 - cos d) / 2, d the angle between the robot's heading and the "
+       "line to the point (not for the current goal); 0 = off"},
   };
 }
 
@@ -571,6 +576,16 @@ Decision SemanticExplorer::decide(const ExplorationInput& input) {
     std::vector<Candidate>& cands = candidates_scored_;
     cands.clear();
     const int frontier_wanted = frontierCellsWanted(options_, g.resolution_m());
+    // The cost of turning away from the way the robot is driving (see the header); the goal
+    // itself never pays it: where the path to it bends round a wall the robot faces away from
+    // it, and charging it then made the robot swing between goals until the time limit.
+    const Vec2 heading(std::cos(input.robot.yaw_rad), std::sin(input.robot.yaw_rad));
+    auto turn = [&](const Vec2& p) {
+      const Vec2 d = p - robot;
+      const double len = d.norm();
+      if (options_.heading_weight <= 0.0 || len < 1e-9) return 0.0;
+      return options_.heading_weight * 0.5 * (1.0 - heading.dot(d) / len);
+    };
     for (std::size_t i = 0; i < points_.size(); ++i) {
       const std::size_t cell = g.index(g.cellOf(points_[i].p));
       const SquareAreas a =
@@ -580,7 +595,9 @@ Decision SemanticExplorer::decide(const ExplorationInput& input) {
       if (sliver && (!slivers_wanted || visited_[cell])) continue;
       const bool inside = room_ != 0 && roomOf(input, points_[i].anchor) == room_;
       if (sliver && !inside) continue;
-      cands.push_back({points_[i].p, i, score(a.unknown_m2 - a.occupied_m2, 0.0, inside), sliver, false});
+      const double without_cost =
+          score(a.unknown_m2 - a.occupied_m2, 0.0, inside) - turn(points_[i].p);
+      cands.push_back({points_[i].p, i, without_cost, sliver, false});
       cands.back().inside = inside;
     }
     if (has_goal_) {

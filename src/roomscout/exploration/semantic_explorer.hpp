@@ -91,6 +91,18 @@
 // (seeds 1-10), revisits 9.9 / 21.8 / 60.8 against 11.1 / 25.9 / 65.1. Applied only in hubs, or
 // with factors 2 or 5, it shortened the worlds less (docs/semantic_tuning.md, session 17).
 //
+// Heading (session 20). S -= heading_weight (1 - cos d) / 2, d the angle between the robot's
+// heading and the line to the point: a point behind the robot costs up to heading_weight more
+// than one ahead, so that of two points alike the robot takes the one it is driving toward
+// instead of turning round (the zig-zag of session 19's traces). The current goal never pays
+// it: the robot faces away from its goal wherever the path bends round a wall, and charging
+// the goal then made one HouseExpo episode swing between two rooms until its time limit.
+// Weight 8 (sweep 0 / 4 / 8 / 12 / 16, seeds 1-10): L98 111.9 / 243.0 / 572.0 m against
+// 123.9 / 248.2 / 574.5 without (seeds 1-20; -9.7 / -2.1 / -0.5 %, T98 -10 / -2 / -1 %; the
+// held-out seeds 11-20 alone -13 / -4 / -1 %); revisits to T98 8.6 / 17.1 / 48.0 against
+// 8.8 / 15.1 / 46.4; HouseExpo seeds 1-3 150 of 150 at 98 %, L98 50.59 against 51.10 m
+// (docs/semantic_tuning.md, session 20).
+//
 // Without a semantic map (ExplorationInput::semantic null) no point is in a room: sampling is
 // uniform and every point scores -A, i.e. the plain RRT score.
 //
@@ -153,6 +165,10 @@ struct SemanticExplorerOptions {
   double hub_sample_radius_m = 4.0;    ///< in a hub, P_sem is drawn from the frontier cells
                                        ///< (of any room) in the square of this half-side
                                        ///< around the robot; 0 = no P_sem in a hub [m]
+  double heading_weight = 8.0;         ///< S -= heading_weight (1 - cos d) / 2, d the angle
+                                       ///< between the robot's heading and the line to the
+                                       ///< point: turning back costs this much (the current
+                                       ///< goal never pays it); 0 = off
 
   void validate() const;
   std::vector<ParameterRef> parameters();
