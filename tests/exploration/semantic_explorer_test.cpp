@@ -430,16 +430,21 @@ TEST(SemanticExplorerTest, CostsAPointByThePathToItNotTheStraightLine) {
   EXPECT_TRUE(by_line.x() > 4.0 && by_line.y() < 2.5) << "goal " << by_line.transpose();
 }
 
+/// One room, known free for 2.5 m <= x < 7.5 m, unknown beyond both ends.
+struct CorridorGrid : LabelledGrid {
+  CorridorGrid()
+      : LabelledGrid([](int x, int) {
+          return x >= 50 && x < 150 ? std::pair{CellState::kFree, 1}
+                                    : std::pair{CellState::kUnknown, 0};
+        }) {}
+};
+
 TEST(SemanticExplorerTest, OfTwoEqualEndsTakesTheOneAhead) {
-  // One room, known free for 2.5 m <= x < 7.5 m, unknown beyond both ends: the robot in the
-  // middle sees two ends alike in gain and cost. The heading term takes the one it faces, so
+  // The robot in the middle of the corridor sees two ends alike in gain and cost. The heading term takes the one it faces, so
   // that the robot does not turn round for a point no better than the one in front of it.
   for (const std::uint64_t seed : {1u, 2u, 3u}) {
     for (const double yaw : {0.0, M_PI}) {
-      LabelledGrid w([](int x, int) {
-        return x >= 50 && x < 150 ? std::pair{CellState::kFree, 1}
-                                  : std::pair{CellState::kUnknown, 0};
-      });
+      CorridorGrid w;
       SemanticExplorerOptions o;
       o.iterations_per_s = 2000.0;
       SemanticExplorer s(seed, o);
@@ -463,15 +468,12 @@ TEST(SemanticExplorerTest, OfTwoEqualEndsTakesTheOneAhead) {
 }
 
 TEST(SemanticExplorerTest, KeepsItsGoalWhenTheRobotTurnsAwayFromIt) {
-  // The same corridor. The robot facing east takes the east end; then it faces west (as it
+  // The robot facing east takes the east end; then it faces west (as it
   // does where its path bends round a wall) and, a replan period later, the west end is no
   // better than the goal: the heading term is a cost of turning away from the goal the robot
   // drives to, so the goal itself never pays it and the robot does not swing round.
   for (const std::uint64_t seed : {1u, 2u, 3u}) {
-    LabelledGrid w([](int x, int) {
-      return x >= 50 && x < 150 ? std::pair{CellState::kFree, 1}
-                                : std::pair{CellState::kUnknown, 0};
-    });
+    CorridorGrid w;
     SemanticExplorerOptions o;
     o.iterations_per_s = 2000.0;
     SemanticExplorer s(seed, o);
