@@ -440,8 +440,9 @@ struct CorridorGrid : LabelledGrid {
 };
 
 TEST(SemanticExplorerTest, OfTwoEqualEndsTakesTheOneAhead) {
-  // The robot in the middle of the corridor sees two ends alike in gain and cost. The heading term takes the one it faces, so
-  // that the robot does not turn round for a point no better than the one in front of it.
+  // The robot in the middle of the corridor sees two ends alike in gain and cost. The heading
+  // term takes the one it faces, so that the robot does not turn round for a point no better
+  // than the one in front of it.
   for (const std::uint64_t seed : {1u, 2u, 3u}) {
     for (const double yaw : {0.0, M_PI}) {
       CorridorGrid w;
@@ -468,10 +469,10 @@ TEST(SemanticExplorerTest, OfTwoEqualEndsTakesTheOneAhead) {
 }
 
 TEST(SemanticExplorerTest, KeepsItsGoalWhenTheRobotTurnsAwayFromIt) {
-  // The robot facing east takes the east end; then it faces west (as it
-  // does where its path bends round a wall) and, a replan period later, the west end is no
-  // better than the goal: the heading term is a cost of turning away from the goal the robot
-  // drives to, so the goal itself never pays it and the robot does not swing round.
+  // The robot facing east takes the east end; then it faces west (as it does where its path
+  // bends round a wall) and, a replan period later, the west end is no better than the goal:
+  // the heading term is a cost of turning away from the goal the robot drives to, so the goal
+  // itself never pays it and the robot does not swing round.
   for (const std::uint64_t seed : {1u, 2u, 3u}) {
     CorridorGrid w;
     SemanticExplorerOptions o;
