@@ -230,7 +230,7 @@ TEST(SemanticExplorerTest, InAHallwayTakesTheRoomBesideItInsteadOfTheHallwaysFar
   EXPECT_TRUE(in_hub);
   ASSERT_FALSE(candidates.empty());
   const SemanticExplorerOptions defaults;
-  const double reach_m = defaults.hub_sample_radius_m + defaults.label_search_m + 0.1;
+  const double reach_m = defaults.hub_sample_radius_m + 0.1;
   for (const Vec2& c : candidates) {
     EXPECT_LE((c - Vec2(2.0, 0.75)).lpNorm<Eigen::Infinity>(), reach_m) << c.transpose();
     EXPECT_GT(c.y(), 3.8) << c.transpose();  // the rooms' frontier, not the hallway's end
@@ -486,6 +486,52 @@ TEST(SemanticExplorerTest, KeepsItsGoalWhenTheRobotTurnsAwayFromIt) {
     ASSERT_EQ(later.status, Decision::Status::kGoal);
     EXPECT_GT(later.goal_m.x(), 7.4) << "seed " << seed << ": " << later.goal_m.transpose();
   }
+}
+
+/// A 1 m wide corridor, 2.5 m <= y < 3.5 m, labelled room 1 for x < 5 m and seen but not yet
+/// labelled for 5 m <= x < 7 m (the segmentation has not run since), unknown from x = 7 m on.
+/// Behind its north wall (3.5 m <= y < 3.6 m) lies room 2, known and labelled; south of the
+/// corridor is solid ground.
+struct FreshCorridorGrid : LabelledGrid {
+  FreshCorridorGrid()
+      : LabelledGrid([](int x, int y) {
+          if (x >= 140) return std::pair{CellState::kUnknown, 0};
+          if (y >= 72) return std::pair{CellState::kFree, 2};
+          if (y < 50 || y >= 70) return std::pair{CellState::kOccupied, 0};
+          return std::pair{CellState::kFree, x < 100 ? 1 : 0};
+        }) {}
+};
+
+TEST(SemanticExplorerTest, TakesTheCorridorSeenSinceTheLastSegmentationAsItsRoom) {
+  // The corridor's open end, 2 m past the last labelled cell, is the current room's frontier:
+  // the unlabelled cells take the room they connect to through free cells (room 1), not the
+  // one 0.15 m away across the wall (room 2). So P_sem is drawn there and the end is the goal.
+  auto run = [](double label_search_m, std::vector<Vec2>& candidates) {
+    FreshCorridorGrid w;
+    SemanticExplorerOptions o;
+    o.label_search_m = label_search_m;
+    o.iterations_per_s = 2000.0;
+    SemanticExplorer s(4, o);
+    const Pose2 robot{1.0, 3.0, 0.0};
+    s.decide({w.grid, w.costmap, robot, 0.0, &w.semantic});
+    const Decision d = s.decide({w.grid, w.costmap, robot, 20.0, &w.semantic});
+    EXPECT_EQ(s.currentRoom(), 1);
+    candidates = s.semanticCandidates();
+    return d;
+  };
+  std::vector<Vec2> candidates;
+  const Decision d = run(SemanticExplorerOptions{}.label_search_m, candidates);
+  ASSERT_FALSE(candidates.empty());
+  for (const Vec2& c : candidates) {
+    EXPECT_GT(c.x(), 6.8) << c.transpose();  // the corridor's end ...
+    EXPECT_LT(c.y(), 3.5) << c.transpose();  // ... not room 2's edge at x = 7 m
+  }
+  ASSERT_EQ(d.status, Decision::Status::kGoal);
+  EXPECT_GT(d.goal_m.x(), 6.9) << d.goal_m.transpose();
+  EXPECT_LT(d.goal_m.y(), 3.5) << d.goal_m.transpose();
+  // Searching only 0.5 m for a label, the end belongs to no room: no P_sem there.
+  run(0.5, candidates);
+  EXPECT_TRUE(candidates.empty());
 }
 
 TEST(SemanticExplorerTest, AblationsAreRegisteredWithTheirDefaults) {

@@ -63,7 +63,7 @@ std::vector<ParameterRef> SemanticExplorerOptions::parameters() {
       {"iterations_per_s", &iterations_per_s, "tree iterations per simulated second"},
       {"replan_period_s", &replan_period_s, "re-evaluation period while driving [s]"},
       {"switch_margin", &switch_margin, "another point must beat the goal's score by this to replace it"},
-      {"label_search_m", &label_search_m, "unlabelled free cells take the room of a labelled cell this close [m]"},
+      {"label_search_m", &label_search_m, "unlabelled free cells take the room of the nearest labelled cell this far through free cells [m]"},
       {"blacklist_radius_m", &blacklist_radius_m, "reached or failed goals drop frontier points this close [m]"},
       {"end_check_period_s", &end_check_period_s, "period of the end test [s]"},
       {"end_checks", &end_checks, "consecutive failing end tests that end exploration"},
@@ -233,28 +233,38 @@ int SemanticExplorer::roomOf(const ExplorationInput& input, const Vec2& p) const
   const SemanticMap& map = *input.semantic;
   const int id = map.roomAt(p);
   if (id != 0) return id;
-  // A cell seen since the segmentation's last update has no label yet: it belongs to the
-  // nearest labelled cell close by (only known-free cells; unknown space is in no room).
+  // A cell seen since the segmentation's last update has no label yet: it belongs to the room
+  // of the nearest labelled cell reached through known-free cells within label_search_m (a
+  // breadth-first search, nearest first; unknown space is in no room). Through free cells, not
+  // the straight line: the fresh end of a corridor belongs to the corridor's room, not to the
+  // room behind its wall.
   const GridGeometry& g = input.grid.geometry();
   const Cell c = g.cellOf(p);
   if (!g.contains(c) || !input.grid.isFree(g.index(c))) return 0;
   const int r = static_cast<int>(std::ceil(options_.label_search_m / g.resolution_m()));
-  int best = 0;
-  long best_d2 = static_cast<long>(r) * r + 1;
-  for (int dy = -r; dy <= r; ++dy) {
-    for (int dx = -r; dx <= r; ++dx) {
-      const long d2 = static_cast<long>(dx) * dx + static_cast<long>(dy) * dy;
-      if (d2 >= best_d2) continue;
-      const Cell q{c.x + dx, c.y + dy};
-      if (!g.contains(q) || !input.grid.isFree(g.index(q))) continue;
-      const int label = map.roomAt(g.centerOf(q));
-      if (label != 0) {
-        best = label;
-        best_d2 = d2;
-      }
+  if (label_stamp_.size() != g.cellCount()) label_stamp_.assign(g.cellCount(), 0);
+  if (++label_stamp_id_ == 0) {
+    std::fill(label_stamp_.begin(), label_stamp_.end(), 0);
+    label_stamp_id_ = 1;
+  }
+  label_queue_.clear();
+  label_queue_.push_back({c, 0});
+  label_stamp_[g.index(c)] = label_stamp_id_;
+  for (std::size_t head = 0; head < label_queue_.size(); ++head) {
+    const auto [q, steps] = label_queue_[head];
+    if (head > 0) {
+      if (const int label = map.roomAt(g.centerOf(q)); label != 0) return label;
+    }
+    if (steps >= r) continue;
+    for (const Cell n : {Cell{q.x + 1, q.y}, Cell{q.x - 1, q.y}, Cell{q.x, q.y + 1}, Cell{q.x, q.y - 1}}) {
+      if (!g.contains(n)) continue;
+      const std::size_t i = g.index(n);
+      if (label_stamp_[i] == label_stamp_id_ || !input.grid.isFree(i)) continue;
+      label_stamp_[i] = label_stamp_id_;
+      label_queue_.push_back({n, steps + 1});
     }
   }
-  return best;
+  return 0;
 }
 
 void SemanticExplorer::updateRoom(const ExplorationInput& input) {
@@ -293,7 +303,8 @@ void SemanticExplorer::collectCandidates(const ExplorationInput& input) {
       hi = hi.cwiseMax(v);
     }
   }
-  const double pad = options_.label_search_m + g.resolution_m();
+  // Cells labelled by the search for a label lie up to label_search_m outside the room's box.
+  const double pad = (local ? 0.0 : options_.label_search_m) + g.resolution_m();
   const Cell a = g.cellOf(lo - Vec2(pad, pad));
   const Cell b = g.cellOf(hi + Vec2(pad, pad));
   const int w = g.width();

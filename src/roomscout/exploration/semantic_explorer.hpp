@@ -27,8 +27,17 @@
 // session 11); S = w_g G - w_c C + A when P_i lies in the current room, - A otherwise. P_i
 // itself is unknown, so its room is that of the known-free cell the edge left from (its
 // anchor); an anchor in no room yet counts as outside. Free cells the segmentation has not
-// labelled yet (seen since its last update) take the room of the nearest labelled cell within
-// label_search_m.
+// labelled yet (seen since its last update, about a second ago: mostly the frontier itself)
+// take the room of the nearest labelled cell reached through free cells within label_search_m
+// (session 21). With 0.5 m the fresh end of the corridor the robot drove along belonged to no
+// room: P_sem was not drawn there and its points scored -A, so the robot turned back for the
+// room's other frontier and came back once the segmentation had caught up (an Explore-Bench
+// loop: three trips along the corridor). With 3.5 m (the laser's range), through free cells so
+// that a room behind the corridor's wall does not claim it: L98 on the 50 HouseExpo plans 48.84
+// against 50.59 m (seeds 1-3), on the six Explore-Bench maps 103.7 against 120.8 m (seeds
+// 1-3), in the built-in worlds 111.0 / 238.1 / 561.3 against 111.9 / 243.0 / 572.0 m (seeds
+// 1-20; the Euclidean nearest cell within 3.5 m, whose hub square grew with it: 114.5 / 240.1 /
+// 566.3; docs/semantic_tuning.md, session 21).
 // The best S among the points that are no slivers becomes the goal (slivers only at the very
 // end, see decide()). A sliver has less than min_unknown_m2 of unknown space in its square, or
 // less than min_frontier_m of frontier there (free cells next to unknown, times the cell size:
@@ -78,7 +87,8 @@
 // 27.9 / 56.5 (docs/semantic_tuning.md, session 16). P_sem in a hub (session 19) is a frontier
 // cell of any room in the square of half-side hub_sample_radius_m around the robot, so that the
 // tree reaches into the rooms beside the hallway first: uniform samples there mostly fed far
-// rooms seen down the hallway, and the robot left near ones for later. With 4 m, L98 117.6 /
+// rooms seen down the hallway, and the robot left near ones for later. The square was then
+// 4 m plus the 0.5 m label search, now 4.5 m itself (the same square). With 4 m, L98 117.6 /
 // 245.8 / 576.1 m against 117.3 / 248.3 / 605.9 without (seeds 1-10), T98 -0 / -1 / -5 %,
 // revisits 10.7 / 29.1 / 66.8 against 11.6 / 31.9 / 69.5; HouseExpo seeds 1-3 51.10 against
 // 51.16 m; 2 and 8 m were longer in the small house (+5 %), 6 m about as 4.
@@ -147,7 +157,9 @@ struct SemanticExplorerOptions {
   double iterations_per_s = 100.0;     ///< tree iterations per simulated second
   double replan_period_s = 2.0;        ///< re-evaluation period while driving [s]
   double switch_margin = 6.0;          ///< another point must beat the goal's score by this
-  double label_search_m = 0.5;         ///< unlabelled free cells take a room this close [m]
+  double label_search_m = 3.5;         ///< unlabelled free cells take the room of the nearest
+                                       ///< labelled cell this far through free cells (the
+                                       ///< laser's range: the robot saw them from its room) [m]
   double blacklist_radius_m = 0.3;     ///< reached or failed goals drop points this close [m]
   double end_check_period_s = 1.0;     ///< period of the end test [s]
   int end_checks = 5;                  ///< consecutive failing end tests that end exploration
@@ -162,7 +174,7 @@ struct SemanticExplorerOptions {
   double next_room_cost_factor = 3.0;  ///< choosing the next room (in a hub, or no point
                                        ///< left in the current room but slivers): C weighs
                                        ///< this many times w_c; 1 = off
-  double hub_sample_radius_m = 4.0;    ///< in a hub, P_sem is drawn from the frontier cells
+  double hub_sample_radius_m = 4.5;    ///< in a hub, P_sem is drawn from the frontier cells
                                        ///< (of any room) in the square of this half-side
                                        ///< around the robot; 0 = no P_sem in a hub [m]
   double heading_weight = 8.0;         ///< S -= heading_weight (1 - cos d) / 2, d the angle
@@ -274,6 +286,11 @@ class SemanticExplorer final : public ExplorationStrategy {
   std::vector<std::pair<float, std::size_t>> heap_;
   bool idle_ = false;  ///< idle for idle_end_s: slivers, then the end phase
   bool has_goal_ = false;
+  // roomOf()'s search for a label: visit marks (valid where equal to the id) and its queue
+  // of cells with their distance in steps.
+  mutable std::vector<std::uint32_t> label_stamp_;
+  mutable std::uint32_t label_stamp_id_ = 0;
+  mutable std::vector<std::pair<Cell, int>> label_queue_;
   Vec2 goal_m_ = Vec2::Zero();
   Vec2 goal_anchor_ = Vec2::Zero();
 };
