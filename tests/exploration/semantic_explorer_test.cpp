@@ -48,6 +48,13 @@ struct TwoRoomGrid : LabelledGrid {
         }) {}
 };
 
+/// The decision after `grow_s` of tree growth with the robot standing still at `robot`.
+template <class World>
+Decision decideAfterGrowing(SemanticExplorer& s, const World& w, const Pose2& robot, double grow_s = 20.0) {
+  s.decide({w.grid, w.costmap, robot, 0.0, &w.semantic});
+  return s.decide({w.grid, w.costmap, robot, grow_s, &w.semantic});
+}
+
 TEST(SemanticExplorerTest, SamplingProbabilityFollowsKtOverOnePlusKt) {
   EXPECT_DOUBLE_EQ(semanticSampleProbability(0.1, 0.0), 0.0);
   EXPECT_DOUBLE_EQ(semanticSampleProbability(0.1, 10.0), 0.5);
@@ -117,8 +124,7 @@ TEST(SemanticExplorerTest, KeepsItsGoalUntilTheGoalsSquareIsExplored) {
   o.replan_period_s = 100.0;  // no periodic switch: only the goal's own state matters here
   SemanticExplorer s(5, o);
   const Pose2 robot{2.0, 1.0, 0.0};
-  s.decide({w.grid, w.costmap, robot, 0.0, &w.semantic});
-  const Decision first = s.decide({w.grid, w.costmap, robot, 2.0, &w.semantic});
+  const Decision first = decideAfterGrowing(s, w, robot, 2.0);
   ASSERT_EQ(first.status, Decision::Status::kGoal);
   const GridGeometry& g = w.grid.geometry();
   ASSERT_TRUE(w.grid.isUnknown(g.index(g.cellOf(first.goal_m))));
@@ -158,8 +164,7 @@ TEST(SemanticExplorerTest, DropsAGoalOnceTheWallBehindItIsSeen) {
     o.min_frontier_m = min_frontier_m;
     SemanticExplorer s(5, o);
     const Pose2 robot{2.0, 1.0, 0.0};
-    s.decide({w.grid, w.costmap, robot, 0.0, &w.semantic});
-    const Decision first = s.decide({w.grid, w.costmap, robot, 2.0, &w.semantic});
+    const Decision first = decideAfterGrowing(s, w, robot, 2.0);
     EXPECT_EQ(first.status, Decision::Status::kGoal);
     // Known free up to 0.25 m beyond the goal, then a wall, over the goal's square and 1.5 m
     // either side of it; unknown beyond the wall (0.7 m deep in the square: more than
@@ -199,8 +204,7 @@ TEST(SemanticExplorerTest, InAHallwayTakesTheRoomBesideItInsteadOfTheHallwaysFar
   // Robot in the hallway at x = 2 m: the rooms north of it open 3.3 m away, the hallway's own
   // frontier 7 m away. With the room reward the hallway's end wins (+A against -A); the hub
   // rule drops the reward there, and a room beside the robot wins. In the hub P_sem comes from
-  // the frontier near the robot: the rooms' frontier within 4 m (plus the label search), not
-  // the hallway's end.
+  // the frontier near the robot: the rooms' frontier within 4.5 m, not the hallway's end.
   auto firstGoal = [](int hub_min_neighbours, bool& in_hub, std::vector<Vec2>& candidates) {
     HallwayGrid w;
     ASSERT_EQ(w.semantic.region(1)->neighbours.size(), 4u);
@@ -208,9 +212,7 @@ TEST(SemanticExplorerTest, InAHallwayTakesTheRoomBesideItInsteadOfTheHallwaysFar
     o.hub_min_neighbours = hub_min_neighbours;
     o.iterations_per_s = 2000.0;
     SemanticExplorer s(11, o);
-    const Pose2 robot{2.0, 0.75, 0.0};
-    s.decide({w.grid, w.costmap, robot, 0.0, &w.semantic});
-    const Decision d = s.decide({w.grid, w.costmap, robot, 20.0, &w.semantic});
+    const Decision d = decideAfterGrowing(s, w, Pose2{2.0, 0.75, 0.0});
     EXPECT_EQ(s.currentRoom(), 1);
     in_hub = s.inHub();
     candidates = s.semanticCandidates();
@@ -277,9 +279,7 @@ TEST(SemanticExplorerTest, ChoosingTheNextRoomTheNearestComesFirst) {
       o.next_room_cost_factor = factor;
       o.iterations_per_s = 2000.0;
       SemanticExplorer s(seed, o);
-      const Pose2 robot{1.0, 2.0, 0.0};
-      s.decide({w.grid, w.costmap, robot, 0.0, &w.semantic});
-      const Decision d = s.decide({w.grid, w.costmap, robot, 20.0, &w.semantic});
+      const Decision d = decideAfterGrowing(s, w, Pose2{1.0, 2.0, 0.0});
       EXPECT_EQ(s.currentRoom(), 1);
       EXPECT_FALSE(s.inHub());
       EXPECT_TRUE(s.semanticCandidates().empty());  // room 1 is finished
@@ -449,9 +449,7 @@ TEST(SemanticExplorerTest, OfTwoEqualEndsTakesTheOneAhead) {
       SemanticExplorerOptions o;
       o.iterations_per_s = 2000.0;
       SemanticExplorer s(seed, o);
-      const Pose2 robot{5.0, 3.0, yaw};
-      s.decide({w.grid, w.costmap, robot, 0.0, &w.semantic});
-      const Decision d = s.decide({w.grid, w.costmap, robot, 20.0, &w.semantic});
+      const Decision d = decideAfterGrowing(s, w, Pose2{5.0, 3.0, yaw});
       ASSERT_EQ(d.status, Decision::Status::kGoal);
       bool east = false, west = false;
       for (const auto& f : s.frontierPoints()) {
@@ -512,9 +510,7 @@ TEST(SemanticExplorerTest, TakesTheCorridorSeenSinceTheLastSegmentationAsItsRoom
     o.label_search_m = label_search_m;
     o.iterations_per_s = 2000.0;
     SemanticExplorer s(4, o);
-    const Pose2 robot{1.0, 3.0, 0.0};
-    s.decide({w.grid, w.costmap, robot, 0.0, &w.semantic});
-    const Decision d = s.decide({w.grid, w.costmap, robot, 20.0, &w.semantic});
+    const Decision d = decideAfterGrowing(s, w, Pose2{1.0, 3.0, 0.0});
     EXPECT_EQ(s.currentRoom(), 1);
     candidates = s.semanticCandidates();
     return d;
