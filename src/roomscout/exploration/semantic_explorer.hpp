@@ -27,7 +27,7 @@
 // session 11); S = w_g G - w_c C + A when P_i lies in the current room, - A otherwise. P_i
 // itself is unknown, so its room is that of the known-free cell the edge left from (its
 // anchor); an anchor in no room yet counts as outside. Free cells the segmentation has not
-// labelled yet (seen since its last update, about a second ago: mostly the frontier itself)
+// labelled yet (seen since its last update, about a second ago: much of it frontier)
 // take the room of the nearest labelled cell reached through free cells within label_search_m
 // (session 21). With 0.5 m the fresh end of the corridor the robot drove along belonged to no
 // room: P_sem was not drawn there and its points scored -A, so the robot turned back for the
