@@ -137,18 +137,14 @@ Decision Mmpf::decide(const ExplorationInput& input) {
   // did, so the sums are bit for bit those of a cell-by-cell BFS in the same cluster order).
   potential_.assign(pn, 0.0f);
   near_centre_.assign(pn, 0);
-  if (seen_.size() != pn) seen_.assign(pn, 0);
   std::vector<std::uint32_t> level, next;
   level.reserve(1024);
   next.reserve(1024);
   const std::ptrdiff_t step[4] = {1, -1, pw, -pw};
   for (const Cluster& cl : clusters) {
-    if (++stamp_ == 0) {  // wrapped: clear the marks once
-      std::fill(seen_.begin(), seen_.end(), 0u);
-      stamp_ = 1;
-    }
+    seen_.begin(pn);
     const std::size_t s = static_cast<std::size_t>(cl.centre.y / f + 1) * pw + cl.centre.x / f + 1;
-    seen_[s] = stamp_;
+    seen_.mark(s);
     level.assign(1, static_cast<std::uint32_t>(s));
     for (int d = 1; !level.empty(); ++d) {
       const float add = static_cast<float>(cl.size) / static_cast<float>(d);
@@ -156,8 +152,8 @@ Decision Mmpf::decide(const ExplorationInput& input) {
       for (const std::uint32_t i : level) {
         for (const std::ptrdiff_t o : step) {
           const std::size_t n = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(i) + o);
-          if (seen_[n] == stamp_ || !free_[n]) continue;
-          seen_[n] = stamp_;
+          if (seen_.marked(n) || !free_[n]) continue;
+          seen_.mark(n);
           next.push_back(static_cast<std::uint32_t>(n));
           potential_[n] -= add;
           if (d <= 1) near_centre_[n] = 1;

@@ -38,6 +38,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "roomscout/core/visit_marks.hpp"
 #include "roomscout/exploration/exploration_strategy.hpp"
 
 namespace roomscout {
@@ -82,8 +83,7 @@ class Mmpf final : public ExplorationStrategy {
   // Scratch buffers reused between cycles.
   std::vector<std::uint8_t> free_;
   std::vector<float> potential_;
-  std::vector<std::uint32_t> seen_;  ///< BFS marks: the stamp of the cluster that reached a cell
-  std::uint32_t stamp_ = 0;
+  VisitMarks seen_;  ///< BFS marks: the cells the current cluster's search reached
   std::vector<std::uint16_t> visits_;
   std::vector<std::uint8_t> near_centre_;
 };

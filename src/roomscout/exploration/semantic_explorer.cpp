@@ -242,14 +242,10 @@ int SemanticExplorer::roomOf(const ExplorationInput& input, const Vec2& p) const
   const Cell c = g.cellOf(p);
   if (!g.contains(c) || !input.grid.isFree(g.index(c))) return 0;
   const int r = static_cast<int>(std::ceil(options_.label_search_m / g.resolution_m()));
-  if (label_stamp_.size() != g.cellCount()) label_stamp_.assign(g.cellCount(), 0);
-  if (++label_stamp_id_ == 0) {
-    std::fill(label_stamp_.begin(), label_stamp_.end(), 0);
-    label_stamp_id_ = 1;
-  }
+  label_seen_.begin(g.cellCount());
   label_queue_.clear();
   label_queue_.push_back({c, 0});
-  label_stamp_[g.index(c)] = label_stamp_id_;
+  label_seen_.mark(g.index(c));
   for (std::size_t head = 0; head < label_queue_.size(); ++head) {
     const auto [q, steps] = label_queue_[head];
     if (head > 0) {
@@ -259,8 +255,8 @@ int SemanticExplorer::roomOf(const ExplorationInput& input, const Vec2& p) const
     for (const Cell n : {Cell{q.x + 1, q.y}, Cell{q.x - 1, q.y}, Cell{q.x, q.y + 1}, Cell{q.x, q.y - 1}}) {
       if (!g.contains(n)) continue;
       const std::size_t i = g.index(n);
-      if (label_stamp_[i] == label_stamp_id_ || !input.grid.isFree(i)) continue;
-      label_stamp_[i] = label_stamp_id_;
+      if (label_seen_.marked(i) || !input.grid.isFree(i)) continue;
+      label_seen_.mark(i);
       label_queue_.push_back({n, steps + 1});
     }
   }
@@ -404,17 +400,10 @@ void SemanticExplorer::cost(const ExplorationInput& input, std::vector<Candidate
   const int gw = g.width(), gh = g.height();
   const int w = (gw + kBlock - 1) / kBlock, h = (gh + kBlock - 1) / kBlock;
   const std::size_t blocks = static_cast<std::size_t>(w) * h;
-  if (dist_.size() != blocks) {
-    dist_.assign(blocks, 0.0f);
-    dist_stamp_.assign(blocks, 0);
-    stamp_ = 0;
-  }
-  if (++stamp_ == 0) {  // wrapped: no stale stamp may look current
-    std::fill(dist_stamp_.begin(), dist_stamp_.end(), 0);
-    stamp_ = 1;
-  }
+  if (dist_.size() != blocks) dist_.assign(blocks, 0.0f);
+  dist_valid_.begin(blocks);
   const float inf = std::numeric_limits<float>::infinity();
-  auto distOf = [&](std::size_t i) { return dist_stamp_[i] == stamp_ ? dist_[i] : inf; };
+  auto distOf = [&](std::size_t i) { return dist_valid_.marked(i) ? dist_[i] : inf; };
   auto blockOf = [&](const Vec2& p) -> std::size_t {
     const Cell c = g.cellOf(p);
     if (!g.contains(c)) return blocks;
@@ -433,7 +422,7 @@ void SemanticExplorer::cost(const ExplorationInput& input, std::vector<Candidate
   const std::size_t start = blockOf(robot);
   if (start < blocks) {
     dist_[start] = 0.0f;
-    dist_stamp_[start] = stamp_;
+    dist_valid_.mark(start);
     heap_.push_back({0.0f, start});
   }
   // True when nothing still open can change the choice, given that every block up to d is final.
@@ -478,7 +467,7 @@ void SemanticExplorer::cost(const ExplorationInput& input, std::vector<Candidate
         const float nd = d + ((dx != 0 && dy != 0) ? diag : step);
         if (nd < distOf(j) && passable(x + dx, y + dy)) {
           dist_[j] = nd;
-          dist_stamp_[j] = stamp_;
+          dist_valid_.mark(j);
           heap_.push_back({nd, j});
           std::push_heap(heap_.begin(), heap_.end(), later);
         }

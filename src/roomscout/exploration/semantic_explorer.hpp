@@ -128,6 +128,7 @@
 #include <string>
 #include <vector>
 
+#include "roomscout/core/visit_marks.hpp"
 #include "roomscout/exploration/exploration_strategy.hpp"
 #include "roomscout/exploration/rrt_tree.hpp"
 
@@ -281,15 +282,13 @@ class SemanticExplorer final : public ExplorationStrategy {
   std::vector<std::uint8_t> pockets_;
   std::vector<Candidate> candidates_scored_;
   std::vector<float> dist_;                  ///< geodesic C: Dijkstra distances [m] ...
-  std::vector<std::uint32_t> dist_stamp_;    ///< ... valid where the stamp is stamp_
-  std::uint32_t stamp_ = 0;
+  VisitMarks dist_valid_;                    ///< ... valid where marked
   std::vector<std::pair<float, std::size_t>> heap_;
   bool idle_ = false;  ///< idle for idle_end_s: slivers, then the end phase
   bool has_goal_ = false;
-  // roomOf()'s search for a label: visit marks (valid where equal to the id) and its queue
-  // of cells with their distance in steps.
-  mutable std::vector<std::uint32_t> label_stamp_;
-  mutable std::uint32_t label_stamp_id_ = 0;
+  // roomOf()'s search for a label: the cells it reached, and its queue of cells with their
+  // distance in steps.
+  mutable VisitMarks label_seen_;
   mutable std::vector<std::pair<Cell, int>> label_queue_;
   Vec2 goal_m_ = Vec2::Zero();
   Vec2 goal_anchor_ = Vec2::Zero();
