@@ -42,8 +42,7 @@ void SemanticExplorerOptions::validate() const {
   if (hub_min_neighbours < 0) throw OptionError("semantic.hub_min_neighbours must be >= 0");
   if (!finiteAtLeast(next_room_cost_factor, 0.0)) throw OptionError("semantic.next_room_cost_factor must be >= 0");
   if (!finiteAtLeast(hub_sample_radius_m, 0.0)) throw OptionError("semantic.hub_sample_radius_m must be >= 0");
-  if (!finiteAtLeast(heading_weight, 0.0))
-    throw OptionError("semantic.heading_weight must be >= 0");
+  if (!finiteAtLeast(heading_weight, 0.0)) throw OptionError("semantic.heading_weight must be >= 0");
 }
 
 std::vector<ParameterRef> SemanticExplorerOptions::parameters() {
