@@ -43,6 +43,8 @@ void SemanticExplorerOptions::validate() const {
   if (!finiteAtLeast(next_room_cost_factor, 0.0)) throw OptionError("semantic.next_room_cost_factor must be >= 0");
   if (!finiteAtLeast(hub_sample_radius_m, 0.0)) throw OptionError("semantic.hub_sample_radius_m must be >= 0");
   if (!finiteAtLeast(heading_weight, 0.0)) throw OptionError("semantic.heading_weight must be >= 0");
+  if (!finiteAtLeast(segment_weight, 0.0)) throw OptionError("semantic.segment_weight must be >= 0");
+  if (!finiteAtLeast(segment_cap_m, 0.0)) throw OptionError("semantic.segment_cap_m must be >= 0");
 }
 
 std::vector<ParameterRef> SemanticExplorerOptions::parameters() {
@@ -79,6 +81,8 @@ std::vector<ParameterRef> SemanticExplorerOptions::parameters() {
       {"heading_weight", &heading_weight,
        "S -= heading_weight (1 - cos d) / 2, d the angle between the robot's heading and the "
        "line to the point (not for the current goal); 0 = off"},
+      {"segment_weight", &segment_weight, "S += segment_weight min(L, segment_cap_m), L the frontier segment's length [1/m]; 0 = off"},
+      {"segment_cap_m", &segment_cap_m, "cap on the frontier segment's length [m]"},
   };
 }
 
@@ -225,6 +229,47 @@ bool SemanticExplorer::goalExplored(const ExplorationInput& input) const {
   const SquareAreas a = squareAreas(input.grid, goal_m_, options_.gain_half_side_m,
                                     frontierCellsWanted(options_, g.resolution_m()));
   return exhausted(a, options_, g.resolution_m());
+}
+
+double SemanticExplorer::segmentLength(const OccupancyGrid& grid, const Vec2& p) const {
+  const GridGeometry& g = grid.geometry();
+  const int w = g.width(), h = g.height();
+  auto frontier = [&](int x, int y) {
+    const std::size_t i = static_cast<std::size_t>(y) * w + x;
+    return grid.isFree(i) && ((x > 0 && grid.isUnknown(i - 1)) || (x + 1 < w && grid.isUnknown(i + 1)) ||
+                              (y > 0 && grid.isUnknown(i - w)) || (y + 1 < h && grid.isUnknown(i + w)));
+  };
+  // The segments of the frontier cells within two cells of p (p is unknown, its frontier runs
+  // beside it), each followed through its 8-connected frontier cells until it is known to be
+  // at least segment_cap_m long.
+  const std::size_t cap = static_cast<std::size_t>(std::ceil(options_.segment_cap_m / g.resolution_m()));
+  const Cell c = g.cellOf(p);
+  segment_seen_.begin(g.cellCount());
+  std::size_t longest = 0;
+  for (int sy = std::max(0, c.y - 2); sy <= std::min(h - 1, c.y + 2); ++sy) {
+    for (int sx = std::max(0, c.x - 2); sx <= std::min(w - 1, c.x + 2); ++sx) {
+      const std::size_t s = static_cast<std::size_t>(sy) * w + sx;
+      if (segment_seen_.marked(s) || !frontier(sx, sy)) continue;
+      segment_queue_.assign(1, Cell{sx, sy});
+      segment_seen_.mark(s);
+      for (std::size_t head = 0; head < segment_queue_.size() && segment_queue_.size() < cap; ++head) {
+        const Cell q = segment_queue_[head];
+        for (int dy = -1; dy <= 1; ++dy) {
+          for (int dx = -1; dx <= 1; ++dx) {
+            const int x = q.x + dx, y = q.y + dy;
+            if (x < 0 || y < 0 || x >= w || y >= h) continue;
+            const std::size_t i = static_cast<std::size_t>(y) * w + x;
+            if (segment_seen_.marked(i) || !frontier(x, y)) continue;
+            segment_seen_.mark(i);
+            segment_queue_.push_back(Cell{x, y});
+          }
+        }
+      }
+      longest = std::max(longest, std::min(cap, segment_queue_.size()));
+      if (longest >= cap) return options_.segment_cap_m;
+    }
+  }
+  return std::min(options_.segment_cap_m, static_cast<double>(longest) * g.resolution_m());
 }
 
 int SemanticExplorer::roomOf(const ExplorationInput& input, const Vec2& p) const {
@@ -585,6 +630,9 @@ Decision SemanticExplorer::decide(const ExplorationInput& input) {
       if (options_.heading_weight <= 0.0 || len < 1e-9) return 0.0;
       return options_.heading_weight * 0.5 * (1.0 - heading.dot(d) / len);
     };
+    auto segmentTerm = [&](const Vec2& p) {
+      return options_.segment_weight > 0.0 ? options_.segment_weight * segmentLength(input.grid, p) : 0.0;
+    };
     for (std::size_t i = 0; i < points_.size(); ++i) {
       const std::size_t cell = g.index(g.cellOf(points_[i].p));
       const SquareAreas a =
@@ -594,15 +642,17 @@ Decision SemanticExplorer::decide(const ExplorationInput& input) {
       if (sliver && (!slivers_wanted || visited_[cell])) continue;
       const bool inside = room_ != 0 && roomOf(input, points_[i].anchor) == room_;
       if (sliver && !inside) continue;
-      const double without_cost =
-          score(a.unknown_m2 - a.occupied_m2, 0.0, inside) - turn(points_[i].p);
+      const double without_cost = score(a.unknown_m2 - a.occupied_m2, 0.0, inside) - turn(points_[i].p) +
+                                  segmentTerm(points_[i].p);
       cands.push_back({points_[i].p, i, without_cost, sliver, false});
       cands.back().inside = inside;
     }
     if (has_goal_) {
       const SquareAreas a = squareAreas(input.grid, goal_m_, options_.gain_half_side_m);
       const bool inside = room_ != 0 && roomOf(input, goal_anchor_) == room_;
-      cands.push_back({goal_m_, points_.size(), score(a.unknown_m2 - a.occupied_m2, 0.0, inside), false, true});
+      cands.push_back({goal_m_, points_.size(),
+                       score(a.unknown_m2 - a.occupied_m2, 0.0, inside) + segmentTerm(goal_m_),
+                       false, true});
     }
     // Choosing the next room: in a hub, or no point left in this room but slivers.
     const bool next_room = hub_ || std::none_of(cands.begin(), cands.end(), [](const Candidate& k) {

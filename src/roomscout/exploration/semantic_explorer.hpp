@@ -113,6 +113,18 @@
 // 8.8 / 15.1 / 46.4; HouseExpo seeds 1-3 150 of 150 at 98 %, L98 50.59 against 51.10 m
 // (docs/semantic_tuning.md, session 20).
 //
+// Frontier segment (session 22). S += segment_weight min(L, segment_cap_m), L the length of the
+// frontier segment beside P_i (its 8-connected free cells with an unknown 4-neighbour, times the
+// cell size). The tree's points are single cells and G's 2 x 2 m square holds about as much
+// unknown space behind a 0.8 m gap (a cupboard, a crack past a door jamb) as behind a wide
+// opening onto unseen floor; the segment's length tells them apart, as a frontier's size does
+// in explore_lite's cost (nearest_frontier). Weight 4 per metre up to 2 m (sweep of 1-4 and
+// caps 2-6 m, seeds 1-10): L98 106.0 / 231.6 / 564.0 m against 111.0 / 238.1 / 561.3 without
+// (seeds 1-20; -4.5 / -2.7 / +0.5 %); HouseExpo seeds 1-3 48.35 against 48.84 m, 150 of 150 at
+// 98 %; Explore-Bench seeds 1-3 103.7 against 103.7 m. Weight 2 up to 4 m was shorter in the
+// office (544.0 m over seeds 1-20) but longer on the floor plans (HouseExpo seed 1 49.05 against
+// 47.10, Explore-Bench seed 1 106.7 against 101.1; docs/semantic_tuning.md, session 22).
+//
 // Without a semantic map (ExplorationInput::semantic null) no point is in a room: sampling is
 // uniform and every point scores -A, i.e. the plain RRT score.
 //
@@ -182,6 +194,10 @@ struct SemanticExplorerOptions {
                                        ///< between the robot's heading and the line to the
                                        ///< point: turning back costs this much (the current
                                        ///< goal never pays it); 0 = off
+  double segment_weight = 4.0;         ///< S += segment_weight min(L, segment_cap_m), L the
+                                       ///< length of the frontier segment the point opens
+                                       ///< onto [1/m]; 0 = off
+  double segment_cap_m = 2.0;          ///< cap on L [m]
 
   void validate() const;
   std::vector<ParameterRef> parameters();
@@ -231,6 +247,9 @@ class SemanticExplorer final : public ExplorationStrategy {
   void collectCandidates(const ExplorationInput& input);
   void grow(const ExplorationInput& input, long iterations);
   int roomOf(const ExplorationInput& input, const Vec2& p) const;
+  /// The length [m] of the longest frontier segment (8-connected free cells with an unknown
+  /// 4-neighbour) beside the frontier point p, up to segment_cap_m.
+  double segmentLength(const OccupancyGrid& grid, const Vec2& p) const;
   bool stale(const ExplorationInput& input, const Vec2& p) const;
   bool goalExplored(const ExplorationInput& input) const;
   bool blacklisted(const Vec2& p) const;
@@ -290,6 +309,9 @@ class SemanticExplorer final : public ExplorationStrategy {
   // distance in steps.
   mutable VisitMarks label_seen_;
   mutable std::vector<std::pair<Cell, int>> label_queue_;
+  // segmentLength()'s search along the frontier.
+  mutable VisitMarks segment_seen_;
+  mutable std::vector<Cell> segment_queue_;
   Vec2 goal_m_ = Vec2::Zero();
   Vec2 goal_anchor_ = Vec2::Zero();
 };
