@@ -21,11 +21,12 @@ namespace {
 /// A 10 x 6 m grid at 0.05 m whose cells, and their rooms, come from a function of the cell:
 /// `paint(x, y)` returns {state, room id (0 = none)}.
 struct LabelledGrid {
-  OccupancyGrid grid{GridGeometry({0.0, 0.0}, 0.05, 200, 120)};
+  OccupancyGrid grid;
   Costmap costmap;
   SemanticMap semantic;
+  /// A 10 x 6 m grid unless `height_cells` says otherwise (0.05 m cells, 200 wide).
   template <class Paint>
-  explicit LabelledGrid(Paint paint) {
+  explicit LabelledGrid(Paint paint, int height_cells = 120) : grid(GridGeometry({0.0, 0.0}, 0.05, 200, height_cells)) {
     const GridGeometry& g = grid.geometry();
     cv::Mat labels(g.height(), g.width(), CV_32S, cv::Scalar(0));
     for (int y = 0; y < g.height(); ++y) {
@@ -300,26 +301,16 @@ TEST(SemanticExplorerTest, ChoosingTheNextRoomTheNearestComesFirst) {
 /// One room (room 1, 10 x 6 m, known free) whose north wall (y = 6 m) has two gaps, never seen
 /// through, onto the unknown space beyond it: a narrow one (1.2 m, x 2.4-3.6 m) and a wide one
 /// (2.4 m, x 6.8-9.2 m). The squares of G around their points hold about the same unknown area.
-struct TwoGapGrid {
-  OccupancyGrid grid{GridGeometry({0.0, 0.0}, 0.05, 200, 180)};
-  Costmap costmap;
-  SemanticMap semantic;
-  TwoGapGrid() {
-    const GridGeometry& g = grid.geometry();
-    cv::Mat labels(g.height(), g.width(), CV_32S, cv::Scalar(0));
-    for (int y = 0; y < g.height(); ++y) {
-      for (int x = 0; x < g.width(); ++x) {
-        const bool gap = (x >= 48 && x < 72) || (x >= 136 && x < 184);
-        CellState s = CellState::kUnknown;
-        if (y < 120) s = CellState::kFree;
-        if (y == 120 && !gap) s = CellState::kOccupied;
-        grid.setState(g.index(Cell{x, y}), s);
-        if (s == CellState::kFree) labels.at<int>(y, x) = 1;
-      }
-    }
-    costmap.update(grid);
-    semantic.update(g, labels, cv::Mat());
-  }
+struct TwoGapGrid : LabelledGrid {
+  TwoGapGrid()
+      : LabelledGrid(
+            [](int x, int y) {
+              const bool gap = (x >= 48 && x < 72) || (x >= 136 && x < 184);
+              if (y < 120) return std::pair{CellState::kFree, 1};
+              if (y == 120 && !gap) return std::pair{CellState::kOccupied, 0};
+              return std::pair{CellState::kUnknown, 0};
+            },
+            180) {}
 };
 
 TEST(SemanticExplorerTest, TheLongerFrontierSegmentWinsByTheSegmentTerm) {
@@ -350,26 +341,17 @@ TEST(SemanticExplorerTest, TheLongerFrontierSegmentWinsByTheSegmentTerm) {
 /// Two known rooms (10 x 5 m, x < 5 m is room 1) and, in room 2, a 1.5 x 1.5 m block whose
 /// north, east and south faces were seen (occupied) but whose west face and interior never were:
 /// the unknown inside of a cupboard whose front the laser only grazed. Nothing else is unknown.
-struct PocketGrid {
-  OccupancyGrid grid{GridGeometry({0.0, 0.0}, 0.05, 200, 100)};
-  Costmap costmap;
-  SemanticMap semantic;
+struct PocketGrid : LabelledGrid {
   static constexpr int kX0 = 140, kX1 = 170, kY0 = 40, kY1 = 70;  // the block [cells]
-  PocketGrid() {
-    const GridGeometry& g = grid.geometry();
-    cv::Mat labels(g.height(), g.width(), CV_32S, cv::Scalar(0));
-    for (int y = 0; y < g.height(); ++y) {
-      for (int x = 0; x < g.width(); ++x) {
-        const bool block = x >= kX0 && x <= kX1 && y >= kY0 && y <= kY1;
-        const bool face = block && (x == kX1 || y == kY0 || y == kY1);
-        const CellState s = face ? CellState::kOccupied : block ? CellState::kUnknown : CellState::kFree;
-        grid.setState(g.index(Cell{x, y}), s);
-        if (s == CellState::kFree) labels.at<int>(y, x) = x < 100 ? 1 : 2;
-      }
-    }
-    costmap.update(grid);
-    semantic.update(g, labels, cv::Mat());
-  }
+  PocketGrid()
+      : LabelledGrid(
+            [](int x, int y) {
+              const bool block = x >= kX0 && x <= kX1 && y >= kY0 && y <= kY1;
+              if (block && (x == kX1 || y == kY0 || y == kY1)) return std::pair{CellState::kOccupied, 0};
+              if (block) return std::pair{CellState::kUnknown, 0};
+              return std::pair{CellState::kFree, x < 100 ? 1 : 2};
+            },
+            100) {}
   bool nearBlock(const Vec2& p) const {
     const Vec2 lo = grid.geometry().centerOf(Cell{kX0, kY0}), hi = grid.geometry().centerOf(Cell{kX1, kY1});
     return p.x() > lo.x() - 1.0 && p.x() < hi.x() + 1.0 && p.y() > lo.y() - 1.0 && p.y() < hi.y() + 1.0;

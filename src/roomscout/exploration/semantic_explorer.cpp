@@ -99,6 +99,14 @@ constexpr double kPocketOpening_m = 0.4;
 /// Geodesic C is searched on blocks of this many cells a side (0.1 m at 0.05 m cells).
 constexpr int kBlock = 2;
 
+/// A frontier cell as this strategy counts them: known free, with an unknown 4-neighbour.
+bool freeBesideUnknown(const OccupancyGrid& grid, int x, int y) {
+  const int w = grid.geometry().width(), h = grid.geometry().height();
+  const std::size_t i = static_cast<std::size_t>(y) * w + x;
+  return grid.isFree(i) && ((x > 0 && grid.isUnknown(i - 1)) || (x + 1 < w && grid.isUnknown(i + 1)) ||
+                            (y > 0 && grid.isUnknown(i - w)) || (y + 1 < h && grid.isUnknown(i + w)));
+}
+
 /// Unknown and occupied areas [m^2] in the square of half-side `half_m` centred on `p`'s cell,
 /// and its frontier cells (free, with an unknown 4-neighbour; the grid's border cells are not
 /// counted) up to `frontier_cap`: only whether a square holds that many matters.
@@ -130,11 +138,8 @@ SquareAreas squareAreas(const OccupancyGrid& grid, const Vec2& p, double half_m,
   for (int k = 0; frontier < frontier_cap && k <= 2 * r; ++k) {
     const int y = c.y + (k % 2 == 0 ? k / 2 : -(k + 1) / 2);
     if (y < std::max(1, y0) || y > std::min(g.height() - 2, y1)) continue;
-    const std::size_t row = static_cast<std::size_t>(y) * w;
     for (int x = std::max(1, x0); x <= std::min(w - 2, x1) && frontier < frontier_cap; ++x) {
-      const std::size_t i = row + x;
-      frontier += grid.isFree(i) && (grid.isUnknown(i - 1) || grid.isUnknown(i + 1) ||
-                                     grid.isUnknown(i - w) || grid.isUnknown(i + w));
+      frontier += freeBesideUnknown(grid, x, y);
     }
   }
   const double cell_m2 = g.resolution_m() * g.resolution_m();
@@ -234,11 +239,6 @@ bool SemanticExplorer::goalExplored(const ExplorationInput& input) const {
 double SemanticExplorer::segmentLength(const OccupancyGrid& grid, const Vec2& p) const {
   const GridGeometry& g = grid.geometry();
   const int w = g.width(), h = g.height();
-  auto frontier = [&](int x, int y) {
-    const std::size_t i = static_cast<std::size_t>(y) * w + x;
-    return grid.isFree(i) && ((x > 0 && grid.isUnknown(i - 1)) || (x + 1 < w && grid.isUnknown(i + 1)) ||
-                              (y > 0 && grid.isUnknown(i - w)) || (y + 1 < h && grid.isUnknown(i + w)));
-  };
   // The segments of the frontier cells within two cells of p (p is unknown, its frontier runs
   // beside it), each followed through its 8-connected frontier cells until it is known to be
   // at least segment_cap_m long.
@@ -249,7 +249,7 @@ double SemanticExplorer::segmentLength(const OccupancyGrid& grid, const Vec2& p)
   for (int sy = std::max(0, c.y - 2); sy <= std::min(h - 1, c.y + 2); ++sy) {
     for (int sx = std::max(0, c.x - 2); sx <= std::min(w - 1, c.x + 2); ++sx) {
       const std::size_t s = static_cast<std::size_t>(sy) * w + sx;
-      if (segment_seen_.marked(s) || !frontier(sx, sy)) continue;
+      if (segment_seen_.marked(s) || !freeBesideUnknown(grid, sx, sy)) continue;
       segment_queue_.assign(1, Cell{sx, sy});
       segment_seen_.mark(s);
       for (std::size_t head = 0; head < segment_queue_.size() && segment_queue_.size() < cap; ++head) {
@@ -259,7 +259,7 @@ double SemanticExplorer::segmentLength(const OccupancyGrid& grid, const Vec2& p)
             const int x = q.x + dx, y = q.y + dy;
             if (x < 0 || y < 0 || x >= w || y >= h) continue;
             const std::size_t i = static_cast<std::size_t>(y) * w + x;
-            if (segment_seen_.marked(i) || !frontier(x, y)) continue;
+            if (segment_seen_.marked(i) || !freeBesideUnknown(grid, x, y)) continue;
             segment_seen_.mark(i);
             segment_queue_.push_back(Cell{x, y});
           }
@@ -375,11 +375,7 @@ void SemanticExplorer::collectCandidates(const ExplorationInput& input) {
   for (int y = y0; y <= y1; ++y) {
     for (int x = x0; x <= x1; ++x) {
       const std::size_t i = static_cast<std::size_t>(y) * w + x;
-      if (!input.grid.isFree(i) || input.costmap.isLethal(i)) continue;
-      if (!input.grid.isUnknown(i - 1) && !input.grid.isUnknown(i + 1) && !input.grid.isUnknown(i - w) &&
-          !input.grid.isUnknown(i + w)) {
-        continue;
-      }
+      if (!freeBesideUnknown(input.grid, x, y) || input.costmap.isLethal(i)) continue;
       if (unknownIn(x, y) * cell_m2 < options_.min_unknown_m2) continue;
       const Vec2 p = g.centerOf(Cell{x, y});
       if (local || roomOf(input, p) == room_) candidates_.push_back(p);
