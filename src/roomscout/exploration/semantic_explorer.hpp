@@ -126,9 +126,9 @@
 // caps 2-6 m, seeds 1-10, with min_frontier_m 0.5 m then): L98 106.0 / 231.6 / 564.0 m against
 // 111.0 / 238.1 / 561.3 without (seeds 1-20; -4.5 / -2.7 / +0.5 %); HouseExpo seeds 1-3 48.35
 // against 48.84 m, 150 of 150 at 98 %; Explore-Bench seeds 1-3 103.7 against 103.7 m. Weight
-// 2 up to 4 m was shorter in the
-// office (544.0 m over seeds 1-20) but longer on the floor plans (HouseExpo seed 1 49.05 against
-// 47.10, Explore-Bench seed 1 106.7 against 101.1; docs/semantic_tuning.md, session 22).
+// 2 up to 4 m was shorter in the office (544.0 m over seeds 1-20) but longer on the floor
+// plans (HouseExpo seed 1 49.05 against 47.10, Explore-Bench seed 1 106.7 against 101.1;
+// docs/semantic_tuning.md, session 22).
 //
 // Without a semantic map (ExplorationInput::semantic null) no point is in a room: sampling is
 // uniform and every point scores -A, i.e. the plain RRT score.
