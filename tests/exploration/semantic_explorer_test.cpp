@@ -188,6 +188,40 @@ TEST(SemanticExplorerTest, DropsAGoalOnceTheWallBehindItIsSeen) {
   EXPECT_TRUE(keepsTheGoal(0.0));
 }
 
+TEST(SemanticExplorerTest, DoesNotReturnToAGoalWhoseCellTurnedLethal) {
+  // A wall seen from close by puts the goal's cell into the inflation, and the goal is dropped.
+  // Seen from afar again, the wall fades back to unknown (log-odds fall with misses at grazing
+  // angles): the tree finds the same cell again, and without a blacklist the robot shuttled
+  // between two such points until its time limit.
+  TwoRoomGrid w;
+  SemanticExplorerOptions o;
+  o.replan_period_s = 100.0;  // no periodic switch: only the goal's own state matters here
+  SemanticExplorer s(5, o);
+  const Pose2 robot{2.0, 1.0, 0.0};
+  const Decision first = decideAfterGrowing(s, w, robot, 2.0);
+  ASSERT_EQ(first.status, Decision::Status::kGoal);
+  const GridGeometry& g = w.grid.geometry();
+  const Cell c = g.cellOf(first.goal_m);
+  const Cell wall{c.x, c.y + 1};
+  ASSERT_TRUE(g.contains(wall));
+  w.grid.setState(g.index(wall), CellState::kOccupied);
+  w.costmap.update(w.grid);
+  ASSERT_TRUE(w.costmap.isLethal(g.index(c)));
+  const Decision dropped = s.decide({w.grid, w.costmap, robot, 2.5, &w.semantic});
+  ASSERT_EQ(dropped.status, Decision::Status::kGoal);
+  EXPECT_GT((dropped.goal_m - first.goal_m).norm(), o.blacklist_radius_m);
+
+  // The wall fades; however long the tree grows, that cell is no goal again.
+  w.grid.setState(g.index(wall), CellState::kUnknown);
+  w.costmap.update(w.grid);
+  for (double t = 3.0; t <= 60.0; t += 1.0) {
+    s.decide({w.grid, w.costmap, robot, t, &w.semantic});
+    for (const SemanticExplorer::FrontierPoint& f : s.frontierPoints()) {
+      EXPECT_GT((f.p - first.goal_m).norm(), o.blacklist_radius_m - 1e-9) << "t = " << t;
+    }
+  }
+}
+
 /// A hallway with four rooms along it: room 1 is the hallway, y < 1.5 m and x < 9 m, running on
 /// into unknown space at x = 9 m; rooms 2-5, 2.25 m wide each, lie north of it for x < 9 m and
 /// 1.5 <= y < 4 m, unknown beyond y = 4 m, with a wall at x = 9 m. Only the labels part the
@@ -633,10 +667,19 @@ double westKnownOnLeaving(const std::string& method, std::uint64_t seed) {
 }
 
 TEST(SemanticExplorerTest, FinishesTheFirstRoomBeforeEnteringTheSecondWhereRrtDoesNot) {
-  const double semantic = westKnownOnLeaving("semantic", 1);
-  const double rrt = westKnownOnLeaving("rrt", 1);
-  EXPECT_GE(semantic, 0.95) << "semantic left the west room with " << semantic * 100 << " % of it known";
-  EXPECT_LT(rrt, 0.9) << "rrt left the west room with " << rrt * 100 << " % of it known";
+  // Over six seeds rather than one: a single seed's figure is a draw (seeds 1-12 left the west
+  // room with 67-100 % of it known, most above 95 %, the rest mostly 89-92 %, with the alcove
+  // half seen; rrt with 27-39 % in ten of the twelve).
+  int rrt_left_early = 0;
+  for (const std::uint64_t seed : {1u, 2u, 3u, 4u, 5u, 6u}) {
+    const double semantic = westKnownOnLeaving("semantic", seed);
+    const double rrt = westKnownOnLeaving("rrt", seed);
+    EXPECT_GE(semantic, 0.85) << "seed " << seed << ": semantic left the west room with " << semantic * 100
+                              << " % of it known";
+    rrt_left_early += rrt < 0.5 ? 1 : 0;
+  }
+  EXPECT_GE(rrt_left_early, 4) << "rrt left the west room with less than half of it known in "
+                               << rrt_left_early << " of 6 seeds";
 }
 
 /// A bare 6 x 4 m room drawn as an image (0.1 m pixels, one-pixel walls), the robot 1.95 m from

@@ -579,6 +579,18 @@ Decision SemanticExplorer::decide(const ExplorationInput& input) {
   }
   if (n > 0) grow(input, n);
 
+  // The goal is kept until its square is explored (less than min_unknown_m2 of unknown space
+  // or min_frontier_m of frontier left), not merely until its own cell is seen: the laser's
+  // edge recedes as the robot drives, so the first unknown cell of an edge is seen long before
+  // the space behind it. A goal dropped because its cell turned lethal (a wall seen beside
+  // it from close by) is blacklisted: walls seen only from close by can fade back to unknown
+  // once the robot leaves, the tree then found the same cell again, and on one HouseExpo plan
+  // the robot shuttled between two such points until its time limit.
+  if (has_goal_ && goalExplored(input)) {
+    const Cell c = g.cellOf(goal_m_);
+    if (g.contains(c) && input.costmap.isLethal(g.index(c))) blacklist_.push_back(goal_m_);
+    has_goal_ = false;
+  }
   // Points seen since (no longer unknown) or inside the inflation are dropped.
   std::erase_if(points_, [&](const FrontierPoint& f) {
     if (!stale(input, f.p) && !blacklisted(f.p)) return false;
@@ -586,12 +598,6 @@ Decision SemanticExplorer::decide(const ExplorationInput& input) {
     return true;
   });
   if (endTest(input)) return Decision::done();
-
-  // The goal is kept until its square is explored (less than min_unknown_m2 of unknown space
-  // or min_frontier_m of frontier left), not merely until its own cell is seen: the laser's
-  // edge recedes as the robot drives, so the first unknown cell of an edge is seen long before
-  // the space behind it.
-  if (has_goal_ && goalExplored(input)) has_goal_ = false;
   const bool periodic = input.time_s - last_eval_s_ >= options_.replan_period_s - 1e-9;
   if (!points_.empty() && (!has_goal_ || periodic)) {
     last_eval_s_ = input.time_s;

@@ -5,7 +5,10 @@
 // so the robot finishes the room it is in before it moves on.
 //
 // Frontier point generation (§III-C.1). One tree rooted at the start, as improved_rrt's (step
-// eta_m, iterations_per_s per simulated second). Each iteration draws its sampling point P_sap:
+// eta_m, iterations_per_s per simulated second; 300 /s since session 24: L98 102.8 / 218.9 m
+// against 105.8 / 222.7 in the two houses over seeds 1-40, 533.3 against 541.3 m in the office
+// over seeds 1-30; eta 0.5 or 2 m were longer; docs/semantic_tuning.md, session 24). Each
+// iteration draws its sampling point P_sap:
 // - with probability 1 / (1 + k t): P_rad, uniform over the bounding box of the known cells;
 // - with probability k t / (1 + k t): P_sem, drawn uniformly among the room's frontier cells
 //   (known-free, non-lethal cells with an unknown 4-neighbour inside the current room; in a
@@ -172,7 +175,7 @@ struct SemanticExplorerOptions {
                                        ///< cupboard); 0 = pocket_area_m2 alone
   bool geodesic_cost = true;           ///< C = path length through the costmap, not Euclidean
   double eta_m = 1.0;                  ///< tree step [m]
-  double iterations_per_s = 100.0;     ///< tree iterations per simulated second
+  double iterations_per_s = 300.0;     ///< tree iterations per simulated second
   double replan_period_s = 2.0;        ///< re-evaluation period while driving [s]
   double switch_margin = 6.0;          ///< another point must beat the goal's score by this
   double label_search_m = 3.5;         ///< unlabelled free cells take the room of the nearest
