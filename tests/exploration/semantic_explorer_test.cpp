@@ -119,13 +119,25 @@ TEST(SemanticExplorerTest, RoomRewardFlipsSignWithMembership) {
   EXPECT_DOUBLE_EQ(s.score(3.0, 2.0, true) - s.score(3.0, 2.0, false), 2.0 * o.room_reward);
 }
 
-TEST(SemanticExplorerTest, KeepsItsGoalUntilTheGoalsSquareIsExplored) {
+/// The strategy's first goal in the two-room grid, the robot standing at (2, 1) m, with no
+/// periodic switch: only the goal's own state decides whether it stands.
+struct FirstGoal {
   TwoRoomGrid w;
   SemanticExplorerOptions o;
-  o.replan_period_s = 100.0;  // no periodic switch: only the goal's own state matters here
-  SemanticExplorer s(5, o);
-  const Pose2 robot{2.0, 1.0, 0.0};
-  const Decision first = decideAfterGrowing(s, w, robot, 2.0);
+  SemanticExplorer s;
+  Pose2 robot{2.0, 1.0, 0.0};
+  Decision first;
+  explicit FirstGoal(const SemanticExplorerOptions& options = {})
+      : o(withoutPeriodicSwitch(options)), s(5, o), first(decideAfterGrowing(s, w, robot, 2.0)) {}
+  static SemanticExplorerOptions withoutPeriodicSwitch(SemanticExplorerOptions options) {
+    options.replan_period_s = 100.0;
+    return options;
+  }
+};
+
+TEST(SemanticExplorerTest, KeepsItsGoalUntilTheGoalsSquareIsExplored) {
+  FirstGoal f;
+  auto& [w, o, s, robot, first] = f;
   ASSERT_EQ(first.status, Decision::Status::kGoal);
   const GridGeometry& g = w.grid.geometry();
   ASSERT_TRUE(w.grid.isUnknown(g.index(g.cellOf(first.goal_m))));
@@ -159,13 +171,10 @@ TEST(SemanticExplorerTest, DropsAGoalOnceTheWallBehindItIsSeen) {
   // The goal's square still holds unknown space, but behind a wall seen since: the outside of
   // a room corner. Whether the strategy keeps the goal then.
   auto keepsTheGoal = [](double min_frontier_m) {
-    TwoRoomGrid w;
-    SemanticExplorerOptions o;
-    o.replan_period_s = 100.0;  // no periodic switch: only the goal's own state matters here
-    o.min_frontier_m = min_frontier_m;
-    SemanticExplorer s(5, o);
-    const Pose2 robot{2.0, 1.0, 0.0};
-    const Decision first = decideAfterGrowing(s, w, robot, 2.0);
+    SemanticExplorerOptions options;
+    options.min_frontier_m = min_frontier_m;
+    FirstGoal f(options);
+    auto& [w, o, s, robot, first] = f;
     EXPECT_EQ(first.status, Decision::Status::kGoal);
     // Known free up to 0.25 m beyond the goal, then a wall, over the goal's square and 1.5 m
     // either side of it; unknown beyond the wall (0.7 m deep in the square: more than
@@ -193,12 +202,8 @@ TEST(SemanticExplorerTest, DoesNotReturnToAGoalWhoseCellTurnedLethal) {
   // Seen from afar again, the wall fades back to unknown (log-odds fall with misses at grazing
   // angles): the tree finds the same cell again, and without a blacklist the robot shuttled
   // between two such points until its time limit.
-  TwoRoomGrid w;
-  SemanticExplorerOptions o;
-  o.replan_period_s = 100.0;  // no periodic switch: only the goal's own state matters here
-  SemanticExplorer s(5, o);
-  const Pose2 robot{2.0, 1.0, 0.0};
-  const Decision first = decideAfterGrowing(s, w, robot, 2.0);
+  FirstGoal f;
+  auto& [w, o, s, robot, first] = f;
   ASSERT_EQ(first.status, Decision::Status::kGoal);
   const GridGeometry& g = w.grid.geometry();
   const Cell c = g.cellOf(first.goal_m);
