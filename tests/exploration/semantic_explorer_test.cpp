@@ -221,8 +221,8 @@ TEST(SemanticExplorerTest, DoesNotReturnToAGoalWhoseCellTurnedLethal) {
   w.costmap.update(w.grid);
   for (double t = 3.0; t <= 60.0; t += 1.0) {
     s.decide({w.grid, w.costmap, robot, t, &w.semantic});
-    for (const SemanticExplorer::FrontierPoint& f : s.frontierPoints()) {
-      EXPECT_GT((f.p - first.goal_m).norm(), o.blacklist_radius_m - 1e-9) << "t = " << t;
+    for (const SemanticExplorer::FrontierPoint& point : s.frontierPoints()) {
+      EXPECT_GT((point.p - first.goal_m).norm(), o.blacklist_radius_m - 1e-9) << "t = " << t;
     }
   }
 }
