@@ -337,6 +337,57 @@ TEST(SemanticExplorerTest, ChoosingTheNextRoomTheNearestComesFirst) {
   }
 }
 
+/// A finished room (room 1, 4 x 2 m, x 4-6 m, y 5-7 m) between two 1 m corridors, each a room
+/// of its own and open at its end: south to y = 2 m (4 m from the room's middle), north to
+/// y = 11 m (5 m). Beyond the corridors' walls all is unknown but for three 0.6 m patches of
+/// floor beside the north corridor (seen through a gap, say), 1.5-2.5 m from its end: frontier
+/// around the north end, outside G's square and not reachable by the tree. 10 x 12 m.
+struct FrontierMassGrid : LabelledGrid {
+  FrontierMassGrid()
+      : LabelledGrid(
+            [](int x, int y) {
+              auto in = [&](int x0, int x1, int y0, int y1) { return x >= x0 && x < x1 && y >= y0 && y < y1; };
+              if (in(80, 120, 100, 140)) return std::pair{CellState::kFree, 1};
+              if (in(90, 110, 40, 100)) return std::pair{CellState::kFree, 2};
+              if (in(90, 110, 140, 220)) return std::pair{CellState::kFree, 3};
+              if (in(50, 62, 170, 182) || in(140, 152, 170, 182) || in(50, 62, 200, 212)) {
+                return std::pair{CellState::kFree, 0};
+              }
+              if (in(78, 122, 98, 142) || in(88, 112, 40, 220)) return std::pair{CellState::kOccupied, 0};
+              // Known corners (walls) so that the known cells' box, which the uniform samples
+              // come from, reaches past the corridors' ends.
+              if (in(0, 4, 0, 4) || in(196, 200, 236, 240)) return std::pair{CellState::kOccupied, 0};
+              return std::pair{CellState::kUnknown, 0};
+            },
+            240) {}
+};
+
+TEST(SemanticExplorerTest, ChoosingTheNextRoomTheSideWithMoreFrontierAroundItComesFirst) {
+  // Both corridor ends open the same way (G, the segment term); the south one is 1 m nearer,
+  // 3 in S with C weighed next_room_cost_factor times. The frontier mass term adds 6.6 m of
+  // the patches' frontier (x 1 per metre) to the north end and takes it. Heading off, so that
+  // the robot's yaw does not take part.
+  for (const std::uint64_t seed : {1u, 2u, 3u}) {
+    for (const double weight : {0.0, SemanticExplorerOptions{}.mass_weight}) {
+      FrontierMassGrid w;
+      SemanticExplorerOptions o;
+      o.mass_weight = weight;
+      o.heading_weight = 0.0;
+      o.iterations_per_s = 2000.0;
+      SemanticExplorer s(seed, o);
+      const Decision d = decideAfterGrowing(s, w, Pose2{5.0, 6.0, 0.0});
+      EXPECT_NE(s.currentRoom(), 0);
+      EXPECT_FALSE(s.inHub());
+      ASSERT_EQ(d.status, Decision::Status::kGoal);
+      if (weight == 0.0) {
+        EXPECT_LT(d.goal_m.y(), 2.5) << "seed " << seed << ": " << d.goal_m.transpose();  // south end
+      } else {
+        EXPECT_GT(d.goal_m.y(), 10.5) << "seed " << seed << ": " << d.goal_m.transpose();  // north end
+      }
+    }
+  }
+}
+
 /// One room (room 1, 10 x 6 m, known free) whose north wall (y = 6 m) has two gaps, never seen
 /// through, onto the unknown space beyond it: a narrow one (1.2 m, x 2.4-3.6 m) and a wide one
 /// (2.4 m, x 6.8-9.2 m). The squares of G around their points hold about the same unknown area.

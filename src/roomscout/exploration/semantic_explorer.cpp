@@ -45,6 +45,9 @@ void SemanticExplorerOptions::validate() const {
   if (!finiteAtLeast(heading_weight, 0.0)) throw OptionError("semantic.heading_weight must be >= 0");
   if (!finiteAtLeast(segment_weight, 0.0)) throw OptionError("semantic.segment_weight must be >= 0");
   if (!finiteAtLeast(segment_cap_m, 0.0)) throw OptionError("semantic.segment_cap_m must be >= 0");
+  if (!finiteAtLeast(mass_weight, 0.0)) throw OptionError("semantic.mass_weight must be >= 0");
+  if (!positive(mass_half_side_m)) throw OptionError("semantic.mass_half_side_m must be > 0");
+  if (!finiteAtLeast(mass_cap_m, 0.0)) throw OptionError("semantic.mass_cap_m must be >= 0");
 }
 
 std::vector<ParameterRef> SemanticExplorerOptions::parameters() {
@@ -83,6 +86,11 @@ std::vector<ParameterRef> SemanticExplorerOptions::parameters() {
        "line to the point (not for the current goal); 0 = off"},
       {"segment_weight", &segment_weight, "S += segment_weight min(L, segment_cap_m), L the frontier segment's length [1/m]; 0 = off"},
       {"segment_cap_m", &segment_cap_m, "cap on the frontier segment's length [m]"},
+      {"mass_weight", &mass_weight,
+       "choosing the next room: S += mass_weight min(M, mass_cap_m), M the frontier (free cells "
+       "next to unknown x cell size) in a square around the point [1/m]; 0 = off"},
+      {"mass_half_side_m", &mass_half_side_m, "half-side of the square M is counted in [m]"},
+      {"mass_cap_m", &mass_cap_m, "cap on M [m]"},
   };
 }
 
@@ -522,6 +530,45 @@ void SemanticExplorer::cost(const ExplorationInput& input, std::vector<Candidate
   }
 }
 
+void SemanticExplorer::addFrontierMass(const OccupancyGrid& grid, std::vector<Candidate>& candidates) {
+  if (options_.mass_weight <= 0.0 || candidates.empty()) return;
+  // A summed-area table of the frontier cells over the candidates' squares (freeBesideUnknown
+  // leaves out the grid's border cells), so that each square costs four lookups.
+  const GridGeometry& g = grid.geometry();
+  const int r = static_cast<int>(std::lround(options_.mass_half_side_m / g.resolution_m()));
+  int x0 = g.width(), x1 = -1, y0 = g.height(), y1 = -1;
+  for (const Candidate& c : candidates) {
+    const Cell q = g.cellOf(c.p);
+    x0 = std::min(x0, q.x - r);
+    x1 = std::max(x1, q.x + r);
+    y0 = std::min(y0, q.y - r);
+    y1 = std::max(y1, q.y + r);
+  }
+  x0 = std::max(1, x0);
+  y0 = std::max(1, y0);
+  x1 = std::min(g.width() - 2, x1);
+  y1 = std::min(g.height() - 2, y1);
+  if (x0 > x1 || y0 > y1) return;
+  const int bw = x1 - x0 + 1, bh = y1 - y0 + 1;
+  const auto stride = static_cast<std::size_t>(bw + 1);
+  mass_sums_.assign(stride * (bh + 1), 0);
+  for (int y = 0; y < bh; ++y) {
+    int row = 0;
+    for (int x = 0; x < bw; ++x) {
+      row += freeBesideUnknown(grid, x0 + x, y0 + y) ? 1 : 0;
+      mass_sums_[(y + 1) * stride + x + 1] = mass_sums_[y * stride + x + 1] + row;
+    }
+  }
+  auto at = [&](int x, int y) { return mass_sums_[y * stride + x]; };
+  for (Candidate& c : candidates) {
+    const Cell q = g.cellOf(c.p);
+    const int qx0 = std::clamp(q.x - r, x0, x1 + 1) - x0, qx1 = std::clamp(q.x + r + 1, x0, x1 + 1) - x0;
+    const int qy0 = std::clamp(q.y - r, y0, y1 + 1) - y0, qy1 = std::clamp(q.y + r + 1, y0, y1 + 1) - y0;
+    const int cells = at(qx1, qy1) - at(qx0, qy1) - at(qx1, qy0) + at(qx0, qy0);
+    c.without_cost += options_.mass_weight * std::min(options_.mass_cap_m, cells * g.resolution_m());
+  }
+}
+
 double SemanticExplorer::pocketArea_m2(const OccupancyGrid& grid) const {
   if (!idle_ || options_.pocket_area_fraction <= 0.0) return options_.pocket_area_m2;
   const std::uint8_t* states = grid.stateBytes();
@@ -661,6 +708,7 @@ Decision SemanticExplorer::decide(const ExplorationInput& input) {
                              return k.inside && !k.sliver && !k.goal;
                            });
     const double w_c = options_.cost_weight * (next_room ? options_.next_room_cost_factor : 1.0);
+    if (next_room) addFrontierMass(input.grid, cands);
     cost(input, cands, w_c);
     double best_score = -std::numeric_limits<double>::infinity();
     double best_sliver_score = -std::numeric_limits<double>::infinity();

@@ -135,6 +135,22 @@
 // plans (HouseExpo seed 1 49.05 against 47.10, Explore-Bench seed 1 106.7 against 101.1;
 // docs/semantic_tuning.md, session 22).
 //
+// Frontier mass (session 25). Choosing the next room (as above: in a hub, or no point left in
+// the room but slivers), S += mass_weight min(M, mass_cap_m), M the frontier (free cells with
+// an unknown 4-neighbour, times the cell size) in the square of half-side mass_half_side_m
+// around P_i: of the places seen, the robot goes first to the one with the most left to see
+// around it, as mmpf's potential sums every frontier weighted by its nearness, and the branch
+// with a little left is not the one it must come back for (the small house's hallway end,
+// session 24). Weight 1 per metre in a 6 x 6 m square, up to 10 m (sweep: weight 0.5 / 1 / 2,
+// half-side 2 / 3 / 4 m, cap 10 / 20 m, seeds 1-40): L98 98.8 / 212.9 m against 102.8 / 218.9
+// in the two houses (per seed -4.0 +- 1.7 / -6.0 +- 3.4 m), the office level (532.2 against
+// 533.3 m, seeds 1-30), the ten IPA building maps 223.4 against 227.1 m (seed 1), the HouseExpo
+// plans 48.36 against 47.73 m (seeds 1-3, per episode +0.63 +- 0.39 m, most of it on two of
+// the larger plans; in hubs alone the term left them level, 47.78, but gained half as much in
+// the houses). Every variant of the sweep was shorter in both houses, this one most; the same
+// term for every decision (0.5 per metre) was not. Session 23 had measured it on ten seeds and
+// not kept it (docs/semantic_tuning.md, session 25).
+//
 // Without a semantic map (ExplorationInput::semantic null) no point is in a room: sampling is
 // uniform and every point scores -A, i.e. the plain RRT score.
 //
@@ -208,6 +224,11 @@ struct SemanticExplorerOptions {
                                        ///< length of the frontier segment the point opens
                                        ///< onto [1/m]; 0 = off
   double segment_cap_m = 2.0;          ///< cap on L [m]
+  double mass_weight = 1.0;            ///< choosing the next room: S += mass_weight min(M,
+                                       ///< mass_cap_m), M the frontier around the point [1/m];
+                                       ///< 0 = off
+  double mass_half_side_m = 3.0;       ///< half-side of the square M is counted in [m]
+  double mass_cap_m = 10.0;            ///< cap on M [m]
 
   void validate() const;
   std::vector<ParameterRef> parameters();
@@ -277,6 +298,9 @@ class SemanticExplorer final : public ExplorationStrategy {
   /// Sets every candidate's C (see SemanticExplorerOptions::geodesic_cost); w_c is the weight
   /// the choice applies to C (the geodesic search stops once no open candidate can win).
   void cost(const ExplorationInput& input, std::vector<Candidate>& candidates, double w_c);
+  /// Adds mass_weight min(M, mass_cap_m) to every candidate's without_cost, M the frontier in
+  /// the square of half-side mass_half_side_m around it (see Frontier mass in the header).
+  void addFrontierMass(const OccupancyGrid& grid, std::vector<Candidate>& candidates);
   bool endTest(const ExplorationInput& input);
   /// The end phase's goal: the nearest reachable frontier cell (as the end test counts them)
   /// the robot has not come within observed_radius_m of and that opens onto no pocket, or none.
@@ -322,6 +346,7 @@ class SemanticExplorer final : public ExplorationStrategy {
   // segmentLength()'s search along the frontier.
   mutable VisitMarks segment_seen_;
   mutable std::vector<Cell> segment_queue_;
+  std::vector<int> mass_sums_;  ///< addFrontierMass()'s summed-area table of frontier cells
   Vec2 goal_m_ = Vec2::Zero();
   Vec2 goal_anchor_ = Vec2::Zero();
 };
