@@ -562,8 +562,10 @@ void SemanticExplorer::addFrontierMass(const OccupancyGrid& grid, std::vector<Ca
   auto at = [&](int x, int y) { return mass_sums_[y * stride + x]; };
   for (Candidate& c : candidates) {
     const Cell q = g.cellOf(c.p);
-    const int qx0 = std::clamp(q.x - r, x0, x1 + 1) - x0, qx1 = std::clamp(q.x + r + 1, x0, x1 + 1) - x0;
-    const int qy0 = std::clamp(q.y - r, y0, y1 + 1) - y0, qy1 = std::clamp(q.y + r + 1, y0, y1 + 1) - y0;
+    const int qx0 = std::clamp(q.x - r, x0, x1 + 1) - x0;
+    const int qx1 = std::clamp(q.x + r + 1, x0, x1 + 1) - x0;
+    const int qy0 = std::clamp(q.y - r, y0, y1 + 1) - y0;
+    const int qy1 = std::clamp(q.y + r + 1, y0, y1 + 1) - y0;
     const int cells = at(qx1, qy1) - at(qx0, qy1) - at(qx1, qy0) + at(qx0, qy0);
     c.without_cost += options_.mass_weight * std::min(options_.mass_cap_m, cells * g.resolution_m());
   }

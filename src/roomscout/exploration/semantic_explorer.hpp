@@ -142,7 +142,7 @@
 // around it, as mmpf's potential sums every frontier weighted by its nearness, and the branch
 // with a little left is not the one it must come back for (the small house's hallway end,
 // session 24). Weight 1 per metre in a 6 x 6 m square, up to 10 m (sweep: weight 0.5 / 1 / 2,
-// half-side 2 / 3 / 4 m, cap 10 / 20 m, seeds 1-40): L98 98.8 / 212.9 m against 102.8 / 218.9
+// half-side 2 / 3 / 4 m, cap 5 / 10 / 20 m, seeds 1-40): L98 98.8 / 212.9 m against 102.8 / 218.9
 // in the two houses (per seed -4.0 +- 1.7 / -6.0 +- 3.4 m), the office level (532.2 against
 // 533.3 m, seeds 1-30), the ten IPA building maps 223.4 against 227.1 m (seed 1), the HouseExpo
 // plans 48.36 against 47.73 m (seeds 1-3, per episode +0.63 +- 0.39 m, most of it on two of
