@@ -56,6 +56,24 @@ Decision decideAfterGrowing(SemanticExplorer& s, const World& w, const Pose2& ro
   return s.decide({w.grid, w.costmap, robot, grow_s, &w.semantic});
 }
 
+/// What a strategy with one scoring term set by `configure` does first: heading off (so that the
+/// robot's yaw takes no part) and a dense tree (2000 iterations/s) grown with the robot at `robot`.
+struct TermGoal {
+  Decision decision;
+  int room;
+  bool hub;
+};
+template <class World, class Configure>
+TermGoal firstGoalWithTerm(const World& w, std::uint64_t seed, const Pose2& robot, Configure configure) {
+  SemanticExplorerOptions o;
+  o.heading_weight = 0.0;
+  o.iterations_per_s = 2000.0;
+  configure(o);
+  SemanticExplorer s(seed, o);
+  const Decision d = decideAfterGrowing(s, w, robot);
+  return {d, s.currentRoom(), s.inHub()};
+}
+
 TEST(SemanticExplorerTest, SamplingProbabilityFollowsKtOverOnePlusKt) {
   EXPECT_DOUBLE_EQ(semanticSampleProbability(0.1, 0.0), 0.0);
   EXPECT_DOUBLE_EQ(semanticSampleProbability(0.1, 10.0), 0.5);
@@ -365,19 +383,15 @@ struct FrontierMassGrid : LabelledGrid {
 TEST(SemanticExplorerTest, ChoosingTheNextRoomTheSideWithMoreFrontierAroundItComesFirst) {
   // Both corridor ends open the same way (G, the segment term); the south one is 1 m nearer,
   // 3 in S with C weighed next_room_cost_factor times. The frontier mass term adds 6.6 m of
-  // the patches' frontier (x 1 per metre) to the north end and takes it. Heading off, so that
-  // the robot's yaw does not take part.
+  // the patches' frontier (x 1 per metre) to the north end and takes it.
   for (const std::uint64_t seed : {1u, 2u, 3u}) {
     for (const double weight : {0.0, SemanticExplorerOptions{}.mass_weight}) {
       FrontierMassGrid w;
-      SemanticExplorerOptions o;
-      o.mass_weight = weight;
-      o.heading_weight = 0.0;
-      o.iterations_per_s = 2000.0;
-      SemanticExplorer s(seed, o);
-      const Decision d = decideAfterGrowing(s, w, Pose2{5.0, 6.0, 0.0});
-      EXPECT_NE(s.currentRoom(), 0);
-      EXPECT_FALSE(s.inHub());
+      const TermGoal g = firstGoalWithTerm(w, seed, Pose2{5.0, 6.0, 0.0},
+                                           [&](SemanticExplorerOptions& o) { o.mass_weight = weight; });
+      EXPECT_NE(g.room, 0);
+      EXPECT_FALSE(g.hub);
+      const Decision& d = g.decision;
       ASSERT_EQ(d.status, Decision::Status::kGoal);
       if (weight == 0.0) {
         EXPECT_LT(d.goal_m.y(), 2.5) << "seed " << seed << ": " << d.goal_m.transpose();  // south end
@@ -407,16 +421,12 @@ TEST(SemanticExplorerTest, TheLongerFrontierSegmentWinsByTheSegmentTerm) {
   // The robot stands 3 m from the narrow gap and about 4.8 m from the wide one's near end.
   // Without the segment term the nearer gap wins (C); with it (4 per metre up to 2 m: 8 against
   // 4.8) the gap onto more unseen space does.
-  // Heading off, so that the robot's yaw does not take part.
   for (const std::uint64_t seed : {1u, 2u, 3u}) {
     for (const double weight : {0.0, SemanticExplorerOptions{}.segment_weight}) {
       TwoGapGrid w;
-      SemanticExplorerOptions o;
-      o.segment_weight = weight;
-      o.heading_weight = 0.0;
-      o.iterations_per_s = 2000.0;
-      SemanticExplorer s(seed, o);
-      const Decision d = decideAfterGrowing(s, w, Pose2{3.0, 3.0, 0.0});
+      const Decision d = firstGoalWithTerm(w, seed, Pose2{3.0, 3.0, 0.0}, [&](SemanticExplorerOptions& o) {
+                           o.segment_weight = weight;
+                         }).decision;
       ASSERT_EQ(d.status, Decision::Status::kGoal);
       EXPECT_GT(d.goal_m.y(), 5.9) << "seed " << seed;
       if (weight == 0.0) {
