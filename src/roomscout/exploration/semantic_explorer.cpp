@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include <opencv2/imgproc.hpp>
+
 #include "roomscout/core/errors.hpp"
 #include "roomscout/core/random.hpp"
 #include "roomscout/exploration/frontier_cells.hpp"
@@ -168,6 +170,27 @@ bool exhausted(const SquareAreas& a, const SemanticExplorerOptions& o, double re
 
 }  // namespace
 
+template <class Test>
+void SemanticExplorer::CellCounts::build(int x0, int y0, int x1, int y1, Test test) {
+  x0_ = x0;
+  y0_ = y0;
+  x1_ = x1;
+  y1_ = y1;
+  mask_.create(y1 - y0 + 1, x1 - x0 + 1, CV_8U);
+  for (int y = y0; y <= y1; ++y) {
+    auto* row = mask_.ptr<std::uint8_t>(y - y0);
+    for (int x = x0; x <= x1; ++x) row[x - x0] = test(x, y) ? 1 : 0;
+  }
+  cv::integral(mask_, sums_, CV_32S);
+}
+
+int SemanticExplorer::CellCounts::square(int cx, int cy, int r) const {
+  const int qx0 = std::clamp(cx - r, x0_, x1_ + 1) - x0_, qx1 = std::clamp(cx + r + 1, x0_, x1_ + 1) - x0_;
+  const int qy0 = std::clamp(cy - r, y0_, y1_ + 1) - y0_, qy1 = std::clamp(cy + r + 1, y0_, y1_ + 1) - y0_;
+  auto at = [&](int x, int y) { return sums_.at<int>(y, x); };
+  return at(qx1, qy1) - at(qx0, qy1) - at(qx1, qy0) + at(qx0, qy0);
+}
+
 SemanticExplorer::SemanticExplorer(std::uint64_t seed, const SemanticExplorerOptions& options, std::string name)
     : options_(options), name_(std::move(name)), rng_(seed) {}
 
@@ -237,8 +260,7 @@ bool SemanticExplorer::stale(const ExplorationInput& input, const Vec2& p) const
 bool SemanticExplorer::goalExplored(const ExplorationInput& input) const {
   if (blacklisted(goal_m_)) return true;
   const GridGeometry& g = input.grid.geometry();
-  const Cell c = g.cellOf(goal_m_);
-  if (!g.contains(c) || input.costmap.isLethal(g.index(c))) return true;
+  if (!g.contains(g.cellOf(goal_m_))) return true;
   const SquareAreas a = squareAreas(input.grid, goal_m_, options_.gain_half_side_m,
                                     frontierCellsWanted(options_, g.resolution_m()));
   return exhausted(a, options_, g.resolution_m());
@@ -362,29 +384,14 @@ void SemanticExplorer::collectCandidates(const ExplorationInput& input) {
   // Unknown cells counted over the box grown by G's square, so that a frontier cell whose
   // square holds less than min_unknown_m2 of unknown space (a sliver) is no candidate.
   const int r = static_cast<int>(std::lround(options_.gain_half_side_m / g.resolution_m()));
-  const int bx0 = std::max(0, x0 - r), bx1 = std::min(w - 1, x1 + r);
-  const int by0 = std::max(0, y0 - r), by1 = std::min(g.height() - 1, y1 + r);
-  const int bw = bx1 - bx0 + 1, bh = by1 - by0 + 1;
-  std::vector<int> sat(static_cast<std::size_t>(bw + 1) * (bh + 1), 0);
-  for (int y = 0; y < bh; ++y) {
-    int row = 0;
-    for (int x = 0; x < bw; ++x) {
-      row += input.grid.isUnknown(static_cast<std::size_t>(by0 + y) * w + bx0 + x) ? 1 : 0;
-      sat[static_cast<std::size_t>(y + 1) * (bw + 1) + x + 1] = sat[static_cast<std::size_t>(y) * (bw + 1) + x + 1] + row;
-    }
-  }
-  auto unknownIn = [&](int cx, int cy) {
-    const int qx0 = std::max(bx0, cx - r) - bx0, qx1 = std::min(bx1, cx + r) - bx0 + 1;
-    const int qy0 = std::max(by0, cy - r) - by0, qy1 = std::min(by1, cy + r) - by0 + 1;
-    auto at = [&](int x, int y) { return sat[static_cast<std::size_t>(y) * (bw + 1) + x]; };
-    return at(qx1, qy1) - at(qx0, qy1) - at(qx1, qy0) + at(qx0, qy0);
-  };
+  counts_.build(std::max(0, x0 - r), std::max(0, y0 - r), std::min(w - 1, x1 + r), std::min(g.height() - 1, y1 + r),
+                [&](int x, int y) { return input.grid.isUnknown(static_cast<std::size_t>(y) * w + x); });
   const double cell_m2 = g.resolution_m() * g.resolution_m();
   for (int y = y0; y <= y1; ++y) {
     for (int x = x0; x <= x1; ++x) {
       const std::size_t i = static_cast<std::size_t>(y) * w + x;
       if (!freeBesideUnknown(input.grid, x, y) || input.costmap.isLethal(i)) continue;
-      if (unknownIn(x, y) * cell_m2 < options_.min_unknown_m2) continue;
+      if (counts_.square(x, y, r) * cell_m2 < options_.min_unknown_m2) continue;
       const Vec2 p = g.centerOf(Cell{x, y});
       if (local || roomOf(input, p) == room_) candidates_.push_back(p);
     }
@@ -532,8 +539,8 @@ void SemanticExplorer::cost(const ExplorationInput& input, std::vector<Candidate
 
 void SemanticExplorer::addFrontierMass(const OccupancyGrid& grid, std::vector<Candidate>& candidates) {
   if (options_.mass_weight <= 0.0 || candidates.empty()) return;
-  // A summed-area table of the frontier cells over the candidates' squares (freeBesideUnknown
-  // leaves out the grid's border cells), so that each square costs four lookups.
+  // The frontier cells counted over the candidates' squares (freeBesideUnknown leaves out the
+  // grid's border cells).
   const GridGeometry& g = grid.geometry();
   const int r = static_cast<int>(std::lround(options_.mass_half_side_m / g.resolution_m()));
   int x0 = g.width(), x1 = -1, y0 = g.height(), y1 = -1;
@@ -549,24 +556,10 @@ void SemanticExplorer::addFrontierMass(const OccupancyGrid& grid, std::vector<Ca
   x1 = std::min(g.width() - 2, x1);
   y1 = std::min(g.height() - 2, y1);
   if (x0 > x1 || y0 > y1) return;
-  const int bw = x1 - x0 + 1, bh = y1 - y0 + 1;
-  const auto stride = static_cast<std::size_t>(bw + 1);
-  mass_sums_.assign(stride * (bh + 1), 0);
-  for (int y = 0; y < bh; ++y) {
-    int row = 0;
-    for (int x = 0; x < bw; ++x) {
-      row += freeBesideUnknown(grid, x0 + x, y0 + y) ? 1 : 0;
-      mass_sums_[(y + 1) * stride + x + 1] = mass_sums_[y * stride + x + 1] + row;
-    }
-  }
-  auto at = [&](int x, int y) { return mass_sums_[y * stride + x]; };
+  counts_.build(x0, y0, x1, y1, [&](int x, int y) { return freeBesideUnknown(grid, x, y); });
   for (Candidate& c : candidates) {
     const Cell q = g.cellOf(c.p);
-    const int qx0 = std::clamp(q.x - r, x0, x1 + 1) - x0;
-    const int qx1 = std::clamp(q.x + r + 1, x0, x1 + 1) - x0;
-    const int qy0 = std::clamp(q.y - r, y0, y1 + 1) - y0;
-    const int qy1 = std::clamp(q.y + r + 1, y0, y1 + 1) - y0;
-    const int cells = at(qx1, qy1) - at(qx0, qy1) - at(qx1, qy0) + at(qx0, qy0);
+    const int cells = counts_.square(q.x, q.y, r);
     c.without_cost += options_.mass_weight * std::min(options_.mass_cap_m, cells * g.resolution_m());
   }
 }
@@ -635,10 +628,14 @@ Decision SemanticExplorer::decide(const ExplorationInput& input) {
   // it from close by) is blacklisted: walls seen only from close by can fade back to unknown
   // once the robot leaves, the tree then found the same cell again, and on one HouseExpo plan
   // the robot shuttled between two such points until its time limit.
-  if (has_goal_ && goalExplored(input)) {
+  if (has_goal_) {
     const Cell c = g.cellOf(goal_m_);
-    if (g.contains(c) && input.costmap.isLethal(g.index(c))) blacklist_.push_back(goal_m_);
-    has_goal_ = false;
+    if (g.contains(c) && input.costmap.isLethal(g.index(c))) {
+      blacklist_.push_back(goal_m_);
+      has_goal_ = false;
+    } else if (goalExplored(input)) {
+      has_goal_ = false;
+    }
   }
   // Points seen since (no longer unknown) or inside the inflation are dropped.
   std::erase_if(points_, [&](const FrontierPoint& f) {

@@ -166,6 +166,8 @@
 #include <string>
 #include <vector>
 
+#include <opencv2/core.hpp>
+
 #include "roomscout/core/visit_marks.hpp"
 #include "roomscout/exploration/exploration_strategy.hpp"
 #include "roomscout/exploration/rrt_tree.hpp"
@@ -274,6 +276,22 @@ class SemanticExplorer final : public ExplorationStrategy {
   long randomDraws() const { return random_draws_; }
 
  private:
+  /// How many cells of a box pass a test, for any square in it in four lookups (a summed-area
+  /// table, cv::integral).
+  class CellCounts {
+   public:
+    /// Counts test(x, y) over the cells [x0, x1] x [y0, y1].
+    template <class Test>
+    void build(int x0, int y0, int x1, int y1, Test test);
+    /// The cells passing the test in the square of half-side r cells around (cx, cy), within
+    /// the box.
+    int square(int cx, int cy, int r) const;
+
+   private:
+    int x0_ = 0, y0_ = 0, x1_ = -1, y1_ = -1;
+    cv::Mat mask_, sums_;
+  };
+
   void updateRoom(const ExplorationInput& input);
   void collectCandidates(const ExplorationInput& input);
   void grow(const ExplorationInput& input, long iterations);
@@ -282,6 +300,8 @@ class SemanticExplorer final : public ExplorationStrategy {
   /// 4-neighbour) beside the frontier point p, up to segment_cap_m.
   double segmentLength(const OccupancyGrid& grid, const Vec2& p) const;
   bool stale(const ExplorationInput& input, const Vec2& p) const;
+  /// The goal's square is explored (too little unknown space or frontier left), or the goal is
+  /// blacklisted or off the grid. Lethal goals are dropped before this is asked (decide()).
   bool goalExplored(const ExplorationInput& input) const;
   bool blacklisted(const Vec2& p) const;
   /// A point that may become the goal (or the goal itself), while the points are scored.
@@ -346,7 +366,7 @@ class SemanticExplorer final : public ExplorationStrategy {
   // segmentLength()'s search along the frontier.
   mutable VisitMarks segment_seen_;
   mutable std::vector<Cell> segment_queue_;
-  std::vector<int> mass_sums_;  ///< addFrontierMass()'s summed-area table of frontier cells
+  CellCounts counts_;  ///< scratch of collectCandidates() and addFrontierMass(), each in one call
   Vec2 goal_m_ = Vec2::Zero();
   Vec2 goal_anchor_ = Vec2::Zero();
 };
