@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <utility>
+#include <vector>
 #include <opencv2/core.hpp>
 
 #include "roomscout/exploration/strategy_registry.hpp"
@@ -338,6 +339,7 @@ TEST(SemanticExplorerTest, ChoosingTheNextRoomTheNearestComesFirst) {
       SemanticExplorerOptions o;
       o.next_room_cost_factor = factor;
       o.segment_weight = 0.0;
+      o.leaf_rooms = false;  // room 2 is a dead end off room 1
       o.iterations_per_s = 2000.0;
       SemanticExplorer s(seed, o);
       const Decision d = decideAfterGrowing(s, w, Pose2{1.0, 2.0, 0.0});
@@ -388,7 +390,10 @@ TEST(SemanticExplorerTest, ChoosingTheNextRoomTheSideWithMoreFrontierAroundItCom
     for (const double weight : {0.0, SemanticExplorerOptions{}.mass_weight}) {
       FrontierMassGrid w;
       const TermGoal g = firstGoalWithTerm(w, seed, Pose2{5.0, 6.0, 0.0},
-                                           [&](SemanticExplorerOptions& o) { o.mass_weight = weight; });
+                                           [&](SemanticExplorerOptions& o) {
+                                             o.mass_weight = weight;
+                                             o.leaf_rooms = false;  // both corridors are dead ends off room 1
+                                           });
       EXPECT_NE(g.room, 0);
       EXPECT_FALSE(g.hub);
       const Decision& d = g.decision;
@@ -397,6 +402,56 @@ TEST(SemanticExplorerTest, ChoosingTheNextRoomTheSideWithMoreFrontierAroundItCom
         EXPECT_LT(d.goal_m.y(), 2.5) << "seed " << seed << ": " << d.goal_m.transpose();  // south end
       } else {
         EXPECT_GT(d.goal_m.y(), 10.5) << "seed " << seed << ": " << d.goal_m.transpose();  // north end
+      }
+    }
+  }
+}
+
+/// A finished room (room 1, x 0.2-3.8 m, y 0.2-3.8 m) with two doors: east (y 0.5-1.3 m) into
+/// room 2, a dead end (its only neighbour is room 1), seen up to x = 5 m and unknown beyond;
+/// north (x 1.5-2.3 m) into rooms 3 and 4, side by side (so neither is a leaf), seen up to
+/// y = 5 m and unknown beyond. From the robot at (2, 3.3) m room 3's frontier is 1.7 m away,
+/// room 2's over 4 m. All else is wall. 10 x 8 m.
+struct LeafRoomGrid : LabelledGrid {
+  LeafRoomGrid()
+      : LabelledGrid(
+            [](int x, int y) {
+              auto in = [&](int x0, int x1, int y0, int y1) { return x >= x0 && x < x1 && y >= y0 && y < y1; };
+              if (in(4, 76, 4, 76) || in(76, 80, 10, 26) || in(30, 46, 76, 80)) {
+                return std::pair{CellState::kFree, 1};
+              }
+              if (in(80, 100, 4, 56)) return std::pair{CellState::kFree, 2};
+              if (in(20, 60, 80, 100)) return std::pair{CellState::kFree, x < 40 ? 3 : 4};
+              if (in(100, 140, 4, 56) || in(20, 60, 100, 150)) return std::pair{CellState::kUnknown, 0};
+              return std::pair{CellState::kOccupied, 0};
+            },
+            160) {}
+};
+
+TEST(SemanticExplorerTest, ALeafRoomOffTheCurrentRoomIsFinishedWithIt) {
+  // Leaving room 1, the nearest room seen is room 3 (next_room_cost_factor). Room 2 opens only
+  // onto room 1: left now, it is a dead end to come back to. With leaf_rooms it counts as part
+  // of room 1, so P_sem is drawn from its frontier and its points take +A.
+  for (const std::uint64_t seed : {1u, 2u, 3u}) {
+    for (const bool leaf : {false, true}) {
+      LeafRoomGrid w;
+      ASSERT_EQ(w.semantic.region(2)->neighbours, std::vector<int>{1});
+      ASSERT_EQ(w.semantic.region(3)->neighbours.size(), 2u);
+      SemanticExplorerOptions o;
+      o.heading_weight = 0.0;
+      o.iterations_per_s = 2000.0;
+      o.leaf_rooms = leaf;
+      SemanticExplorer s(seed, o);
+      const Decision d = decideAfterGrowing(s, w, Pose2{2.0, 3.3, 0.0});
+      EXPECT_EQ(s.currentRoom(), 1);
+      EXPECT_FALSE(s.inHub());
+      EXPECT_EQ(s.semanticCandidates().empty(), !leaf);
+      for (const Vec2& p : s.semanticCandidates()) EXPECT_EQ(w.semantic.roomAt(p), 2) << p.transpose();
+      ASSERT_EQ(d.status, Decision::Status::kGoal);
+      if (leaf) {
+        EXPECT_GT(d.goal_m.x(), 4.5) << "seed " << seed << ": " << d.goal_m.transpose();  // room 2
+      } else {
+        EXPECT_GT(d.goal_m.y(), 4.5) << "seed " << seed << ": " << d.goal_m.transpose();  // rooms 3-4
       }
     }
   }

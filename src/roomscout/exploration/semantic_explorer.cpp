@@ -93,6 +93,8 @@ std::vector<ParameterRef> SemanticExplorerOptions::parameters() {
        "next to unknown x cell size) in a square around the point [1/m]; 0 = off"},
       {"mass_half_side_m", &mass_half_side_m, "half-side of the square M is counted in [m]"},
       {"mass_cap_m", &mass_cap_m, "cap on M [m]"},
+      {"leaf_rooms", &leaf_rooms,
+       "a room whose only neighbour is the current room counts as part of it (+A, P_sem)"},
   };
 }
 
@@ -351,6 +353,20 @@ void SemanticExplorer::updateRoom(const ExplorationInput& input) {
          static_cast<int>(region->neighbours.size()) >= options_.hub_min_neighbours;
 }
 
+bool SemanticExplorer::leafOfCurrentRoom(const ExplorationInput& input, int room) const {
+  if (!options_.leaf_rooms || room == 0 || room_ == 0 || room == room_ || input.semantic == nullptr) return false;
+  // A leaf opens onto the current room alone, and the current room has another way out: in a
+  // world of two rooms neither is a leaf of the other.
+  const SemanticRegion* region = input.semantic->region(room);
+  const SemanticRegion* current = input.semantic->region(room_);
+  return region != nullptr && current != nullptr && region->neighbours.size() == 1 &&
+         region->neighbours.front() == room_ && current->neighbours.size() >= 2;
+}
+
+bool SemanticExplorer::inCurrentRoom(const ExplorationInput& input, int room) const {
+  return room != 0 && (room == room_ || leafOfCurrentRoom(input, room));
+}
+
 void SemanticExplorer::collectCandidates(const ExplorationInput& input) {
   candidates_.clear();
   const GridGeometry& g = input.grid.geometry();
@@ -371,6 +387,15 @@ void SemanticExplorer::collectCandidates(const ExplorationInput& input) {
     for (const Vec2& v : region->polygon_m) {
       lo = lo.cwiseMin(v);
       hi = hi.cwiseMax(v);
+    }
+    // The room's leaves (see leaf_rooms) are part of it.
+    for (const int n : region->neighbours) {
+      const SemanticRegion* leaf = leafOfCurrentRoom(input, n) ? input.semantic->region(n) : nullptr;
+      if (leaf == nullptr) continue;
+      for (const Vec2& v : leaf->polygon_m) {
+        lo = lo.cwiseMin(v);
+        hi = hi.cwiseMax(v);
+      }
     }
   }
   // Cells labelled by the search for a label lie up to label_search_m outside the room's box.
@@ -393,7 +418,7 @@ void SemanticExplorer::collectCandidates(const ExplorationInput& input) {
       if (!freeBesideUnknown(input.grid, x, y) || input.costmap.isLethal(i)) continue;
       if (counts_.square(x, y, r) * cell_m2 < options_.min_unknown_m2) continue;
       const Vec2 p = g.centerOf(Cell{x, y});
-      if (local || roomOf(input, p) == room_) candidates_.push_back(p);
+      if (local || inCurrentRoom(input, roomOf(input, p))) candidates_.push_back(p);
     }
   }
 }
@@ -688,7 +713,7 @@ Decision SemanticExplorer::decide(const ExplorationInput& input) {
       const bool sliver =
           exhausted(a, options_, g.resolution_m()) || (options_.pocket_area_m2 > 0.0 && pockets_[cell]);
       if (sliver && (!slivers_wanted || visited_[cell])) continue;
-      const bool inside = room_ != 0 && roomOf(input, points_[i].anchor) == room_;
+      const bool inside = inCurrentRoom(input, roomOf(input, points_[i].anchor));
       if (sliver && !inside) continue;
       const double without_cost = score(a.unknown_m2 - a.occupied_m2, 0.0, inside) - turn(points_[i].p) +
                                   segmentTerm(points_[i].p);
@@ -697,7 +722,7 @@ Decision SemanticExplorer::decide(const ExplorationInput& input) {
     }
     if (has_goal_) {
       const SquareAreas a = squareAreas(input.grid, goal_m_, options_.gain_half_side_m);
-      const bool inside = room_ != 0 && roomOf(input, goal_anchor_) == room_;
+      const bool inside = inCurrentRoom(input, roomOf(input, goal_anchor_));
       cands.push_back({goal_m_, points_.size(),
                        score(a.unknown_m2 - a.occupied_m2, 0.0, inside) + segmentTerm(goal_m_),
                        false, true});

@@ -231,6 +231,9 @@ struct SemanticExplorerOptions {
                                        ///< 0 = off
   double mass_half_side_m = 3.0;       ///< half-side of the square M is counted in [m]
   double mass_cap_m = 10.0;            ///< cap on M [m]
+  bool leaf_rooms = true;              ///< a room whose only neighbour is the current room
+                                       ///< counts as part of it: +A for its points, P_sem
+                                       ///< from its frontier too
 
   void validate() const;
   std::vector<ParameterRef> parameters();
@@ -293,6 +296,11 @@ class SemanticExplorer final : public ExplorationStrategy {
   };
 
   void updateRoom(const ExplorationInput& input);
+  /// Whether a point whose room is `room` counts as in the current room: `room` is the current
+  /// room, or (leaf_rooms) a room whose only neighbour it is. False outside every room.
+  bool inCurrentRoom(const ExplorationInput& input, int room) const;
+  /// Whether `room` is a leaf of the current room (see leaf_rooms).
+  bool leafOfCurrentRoom(const ExplorationInput& input, int room) const;
   void collectCandidates(const ExplorationInput& input);
   void grow(const ExplorationInput& input, long iterations);
   int roomOf(const ExplorationInput& input, const Vec2& p) const;
