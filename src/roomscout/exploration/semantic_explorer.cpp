@@ -351,20 +351,21 @@ void SemanticExplorer::updateRoom(const ExplorationInput& input) {
       room_ != 0 && input.semantic != nullptr ? input.semantic->region(room_) : nullptr;
   hub_ = region != nullptr && options_.hub_min_neighbours > 0 &&
          static_cast<int>(region->neighbours.size()) >= options_.hub_min_neighbours;
+  // Leaves: rooms that open onto the current room alone, while the current room has another way
+  // out (in a world of two rooms neither is a leaf of the other).
+  leaves_.clear();
+  if (options_.leaf_rooms && region != nullptr && region->neighbours.size() >= 2) {
+    for (const int n : region->neighbours) {
+      const SemanticRegion* other = input.semantic->region(n);
+      if (other != nullptr && other->neighbours.size() == 1 && other->neighbours.front() == room_) {
+        leaves_.push_back(n);
+      }
+    }
+  }
 }
 
-bool SemanticExplorer::leafOfCurrentRoom(const ExplorationInput& input, int room) const {
-  if (!options_.leaf_rooms || room == 0 || room_ == 0 || room == room_ || input.semantic == nullptr) return false;
-  // A leaf opens onto the current room alone, and the current room has another way out: in a
-  // world of two rooms neither is a leaf of the other.
-  const SemanticRegion* region = input.semantic->region(room);
-  const SemanticRegion* current = input.semantic->region(room_);
-  return region != nullptr && current != nullptr && region->neighbours.size() == 1 &&
-         region->neighbours.front() == room_ && current->neighbours.size() >= 2;
-}
-
-bool SemanticExplorer::inCurrentRoom(const ExplorationInput& input, int room) const {
-  return room != 0 && (room == room_ || leafOfCurrentRoom(input, room));
+bool SemanticExplorer::inCurrentRoom(int room) const {
+  return room != 0 && (room == room_ || std::find(leaves_.begin(), leaves_.end(), room) != leaves_.end());
 }
 
 void SemanticExplorer::collectCandidates(const ExplorationInput& input) {
@@ -389,10 +390,8 @@ void SemanticExplorer::collectCandidates(const ExplorationInput& input) {
       hi = hi.cwiseMax(v);
     }
     // The room's leaves (see leaf_rooms) are part of it.
-    for (const int n : region->neighbours) {
-      const SemanticRegion* leaf = leafOfCurrentRoom(input, n) ? input.semantic->region(n) : nullptr;
-      if (leaf == nullptr) continue;
-      for (const Vec2& v : leaf->polygon_m) {
+    for (const int n : leaves_) {
+      for (const Vec2& v : input.semantic->region(n)->polygon_m) {
         lo = lo.cwiseMin(v);
         hi = hi.cwiseMax(v);
       }
@@ -418,7 +417,7 @@ void SemanticExplorer::collectCandidates(const ExplorationInput& input) {
       if (!freeBesideUnknown(input.grid, x, y) || input.costmap.isLethal(i)) continue;
       if (counts_.square(x, y, r) * cell_m2 < options_.min_unknown_m2) continue;
       const Vec2 p = g.centerOf(Cell{x, y});
-      if (local || inCurrentRoom(input, roomOf(input, p))) candidates_.push_back(p);
+      if (local || inCurrentRoom(roomOf(input, p))) candidates_.push_back(p);
     }
   }
 }
@@ -713,7 +712,7 @@ Decision SemanticExplorer::decide(const ExplorationInput& input) {
       const bool sliver =
           exhausted(a, options_, g.resolution_m()) || (options_.pocket_area_m2 > 0.0 && pockets_[cell]);
       if (sliver && (!slivers_wanted || visited_[cell])) continue;
-      const bool inside = inCurrentRoom(input, roomOf(input, points_[i].anchor));
+      const bool inside = inCurrentRoom(roomOf(input, points_[i].anchor));
       if (sliver && !inside) continue;
       const double without_cost = score(a.unknown_m2 - a.occupied_m2, 0.0, inside) - turn(points_[i].p) +
                                   segmentTerm(points_[i].p);
@@ -722,7 +721,7 @@ Decision SemanticExplorer::decide(const ExplorationInput& input) {
     }
     if (has_goal_) {
       const SquareAreas a = squareAreas(input.grid, goal_m_, options_.gain_half_side_m);
-      const bool inside = inCurrentRoom(input, roomOf(input, goal_anchor_));
+      const bool inside = inCurrentRoom(roomOf(input, goal_anchor_));
       cands.push_back({goal_m_, points_.size(),
                        score(a.unknown_m2 - a.occupied_m2, 0.0, inside) + segmentTerm(goal_m_),
                        false, true});

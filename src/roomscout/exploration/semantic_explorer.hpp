@@ -309,10 +309,8 @@ class SemanticExplorer final : public ExplorationStrategy {
 
   void updateRoom(const ExplorationInput& input);
   /// Whether a point whose room is `room` counts as in the current room: `room` is the current
-  /// room, or (leaf_rooms) a room whose only neighbour it is. False outside every room.
-  bool inCurrentRoom(const ExplorationInput& input, int room) const;
-  /// Whether `room` is a leaf of the current room (see leaf_rooms).
-  bool leafOfCurrentRoom(const ExplorationInput& input, int room) const;
+  /// room or one of its leaves (leaf_rooms). False outside every room.
+  bool inCurrentRoom(int room) const;
   void collectCandidates(const ExplorationInput& input);
   void grow(const ExplorationInput& input, long iterations);
   int roomOf(const ExplorationInput& input, const Vec2& p) const;
@@ -364,6 +362,7 @@ class SemanticExplorer final : public ExplorationStrategy {
   double last_eval_s_ = -1e9;
   int room_ = 0;
   bool hub_ = false;
+  std::vector<int> leaves_;  ///< the current room's leaves (see leaf_rooms), as of updateRoom()
   double room_since_s_ = 0.0;
   double time_in_room_s_ = 0.0;
   long semantic_draws_ = 0, random_draws_ = 0;
