@@ -11,8 +11,8 @@
 // iteration draws its sampling point P_sap:
 // - with probability 1 / (1 + k t): P_rad, uniform over the bounding box of the known cells;
 // - with probability k t / (1 + k t): P_sem, drawn uniformly among the room's frontier cells
-//   (known-free, non-lethal cells with an unknown 4-neighbour inside the current room; in a
-//   hallway, those near the robot, see Hubs below);
+//   (known-free, non-lethal cells with an unknown 4-neighbour inside the current room and its
+//   dead-end neighbours, see Leaf rooms below; in a hallway, those near the robot, see Hubs);
 // t is the time since the robot's room last changed. When the room has no frontier cell left,
 // P_rad is used. An extension toward P_sem takes the full step eta_m along its direction, so
 // the edge crosses the frontier instead of stopping on its free side. An edge that reaches
@@ -280,8 +280,8 @@ class SemanticExplorer final : public ExplorationStrategy {
     Vec2 anchor;  ///< last known point of the edge before it [m]
   };
   const std::vector<FrontierPoint>& frontierPoints() const { return points_; }
-  /// The frontier cells P_sem is drawn from (as of the last decide()): the current room's, or
-  /// in a hub those near the robot.
+  /// The frontier cells P_sem is drawn from (as of the last decide()): the current room's and
+  /// its leaves' (leaf_rooms), or in a hub those near the robot.
   const std::vector<Vec2>& semanticCandidates() const { return candidates_; }
   int currentRoom() const { return room_; }
   /// The current room is a hub (hub_min_neighbours), as of the last decide().
