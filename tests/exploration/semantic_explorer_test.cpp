@@ -63,6 +63,7 @@ struct TermGoal {
   Decision decision;
   int room;
   bool hub;
+  std::vector<Vec2> semantic_candidates;  ///< the cells P_sem was drawn from
 };
 template <class World, class Configure>
 TermGoal firstGoalWithTerm(const World& w, std::uint64_t seed, const Pose2& robot, Configure configure) {
@@ -72,7 +73,7 @@ TermGoal firstGoalWithTerm(const World& w, std::uint64_t seed, const Pose2& robo
   configure(o);
   SemanticExplorer s(seed, o);
   const Decision d = decideAfterGrowing(s, w, robot);
-  return {d, s.currentRoom(), s.inHub()};
+  return {d, s.currentRoom(), s.inHub(), s.semanticCandidates()};
 }
 
 TEST(SemanticExplorerTest, SamplingProbabilityFollowsKtOverOnePlusKt) {
@@ -437,16 +438,13 @@ TEST(SemanticExplorerTest, ALeafRoomOffTheCurrentRoomIsFinishedWithIt) {
       LeafRoomGrid w;
       ASSERT_EQ(w.semantic.region(2)->neighbours, std::vector<int>{1});
       ASSERT_EQ(w.semantic.region(3)->neighbours.size(), 2u);
-      SemanticExplorerOptions o;
-      o.heading_weight = 0.0;
-      o.iterations_per_s = 2000.0;
-      o.leaf_rooms = leaf;
-      SemanticExplorer s(seed, o);
-      const Decision d = decideAfterGrowing(s, w, Pose2{2.0, 3.3, 0.0});
-      EXPECT_EQ(s.currentRoom(), 1);
-      EXPECT_FALSE(s.inHub());
-      EXPECT_EQ(s.semanticCandidates().empty(), !leaf);
-      for (const Vec2& p : s.semanticCandidates()) EXPECT_EQ(w.semantic.roomAt(p), 2) << p.transpose();
+      const TermGoal g =
+          firstGoalWithTerm(w, seed, Pose2{2.0, 3.3, 0.0}, [&](SemanticExplorerOptions& o) { o.leaf_rooms = leaf; });
+      EXPECT_EQ(g.room, 1);
+      EXPECT_FALSE(g.hub);
+      EXPECT_EQ(g.semantic_candidates.empty(), !leaf);
+      for (const Vec2& p : g.semantic_candidates) EXPECT_EQ(w.semantic.roomAt(p), 2) << p.transpose();
+      const Decision& d = g.decision;
       ASSERT_EQ(d.status, Decision::Status::kGoal);
       if (leaf) {
         EXPECT_GT(d.goal_m.x(), 4.5) << "seed " << seed << ": " << d.goal_m.transpose();  // room 2
