@@ -618,6 +618,33 @@ TEST(SemanticExplorerTest, CostsAPointByThePathToItNotTheStraightLine) {
   EXPECT_TRUE(by_line.x() > 4.0 && by_line.y() < 2.5) << "goal " << by_line.transpose();
 }
 
+TEST(SemanticExplorerTest, EndPhaseTakesTheCellNearestByPath) {
+  // Every tree point is a sliver (min_unknown_m2 beyond any square), so the robot standing at
+  // (3, 1) idles and then, in the end phase, visits frontier cells: first the one nearest by C.
+  // By path that is block B (3.5 m); in a straight line block A, behind the wall (1.5 m).
+  auto first_end_goal = [](bool geodesic) {
+    WallGrid w;
+    SemanticExplorerOptions o;
+    o.min_unknown_m2 = 100.0;
+    o.geodesic_cost = geodesic;
+    SemanticExplorer s(5, o);
+    const Pose2 robot{3.0, 1.0, 0.0};
+    for (double t = 0.0; t <= 2.0 * o.idle_end_s; t += 1.0) {
+      const Decision d = s.decide({w.grid, w.costmap, robot, t, nullptr});
+      if (d.status == Decision::Status::kGoal && (d.goal_m - robot.position()).norm() > 0.5) {
+        EXPECT_GE(t, o.idle_end_s) << "not before idling";
+        return d.goal_m;
+      }
+    }
+    ADD_FAILURE() << "no end-phase goal";
+    return Vec2(0.0, 0.0);
+  };
+  const Vec2 by_path = first_end_goal(true);
+  EXPECT_TRUE(by_path.x() < 1.3 && by_path.y() > 3.4) << "goal " << by_path.transpose();
+  const Vec2 by_line = first_end_goal(false);
+  EXPECT_TRUE(WallGrid::inA(by_line)) << "goal " << by_line.transpose();
+}
+
 /// One room, known free for 2.5 m <= x < 7.5 m, unknown beyond both ends.
 struct CorridorGrid : LabelledGrid {
   CorridorGrid()

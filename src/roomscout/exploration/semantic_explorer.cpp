@@ -239,13 +239,19 @@ std::optional<Vec2> SemanticExplorer::endPhaseCell(const ExplorationInput& input
     markUnknownPockets(pockets, input.grid, input.costmap, cells, pocketArea_m2(input.grid),
                        kPocketOpening_m);
   }
-  double best_d2 = std::numeric_limits<double>::infinity();
+  // Nearest by C (the path length with geodesic_cost): in a straight line the nearest cell may
+  // lie behind a wall, in the next room.
+  std::vector<Candidate>& cands = candidates_scored_;
+  cands.clear();
   for (const Cell& c : cells) {
-    if (!pockets.empty() && pockets[g.index(c)]) continue;
-    const double d2 = (g.centerOf(c) - robot).squaredNorm();
-    if (d2 < best_d2) {
-      best_d2 = d2;
-      end_cell_ = g.centerOf(c);
+    if (pockets.empty() || !pockets[g.index(c)]) cands.push_back({g.centerOf(c), 0, 0.0, false, false});
+  }
+  cost(input, cands, 1.0);
+  double best_m = std::numeric_limits<double>::infinity();
+  for (const Candidate& c : cands) {
+    if (c.cost_m < best_m) {
+      best_m = c.cost_m;
+      end_cell_ = c.p;
     }
   }
   return end_cell_;
