@@ -66,9 +66,10 @@
 //   cells are left in end_checks consecutive checks. The tree misses wedges of rooms seen from
 //   their doors: with this phase all 150 HouseExpo episodes (seeds 1-3) reach 98 %, 149 without.
 // The tree's rate, 300 iterations /s (24): 102.8 / 218.9 / 533.3 m against 105.8 / 222.7 / 541.3
-// at 100 (seeds 1-40 / 1-40 / 1-30); eta_m 0.5 or 2 m were longer. A: 2 and 4 were level or
-// longer than 3 (seeds 1-40, session 28); A 1 is 4.5 % shorter on the HouseExpo plans but 1.6 /
-// 3.0 / 4.4 % longer in the built-in worlds (18).
+// at 100 (seeds 1-40 / 1-40 / 1-30); eta_m 0.5 or 2 m were longer. A: 2 and 4 were level with 3
+// or longer, and so were k 0.05, 0.2 and 0.4 with 0.1 (seeds 1-40 in the houses, session 28);
+// A 1 is 4.5 % shorter on the HouseExpo plans but 1.6 / 3.0 / 4.4 % longer in the built-in
+// worlds (18).
 // Without a semantic map (ExplorationInput::semantic null) no point is in a room: sampling is
 // uniform and every point scores -A, i.e. the plain RRT score.
 
