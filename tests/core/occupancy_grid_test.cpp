@@ -1,6 +1,9 @@
 #include "roomscout/core/occupancy_grid.hpp"
 
+#include <cmath>
 #include <random>
+
+#include "roomscout/core/errors.hpp"
 
 #include <gtest/gtest.h>
 
@@ -67,6 +70,39 @@ TEST(OccupancyGrid, AnOccupiedCellMissedOftenEnoughBecomesUnknownThenFree) {
   grid.addMiss(0);  // -0.04
   grid.addMiss(0);  // -0.45 < -0.35
   EXPECT_EQ(grid.state(0), CellState::kFree);
+}
+
+TEST(OccupancyGridReframe, KeepsCellsWhereTheyAreInTheMapFrame) {
+  const GridGeometry g(Vec2(1.0, -2.0), 0.1, 20, 10);
+  OccupancyGrid grid(g);
+  const Vec2 wall(2.05, -1.45), floor(1.25, -1.15);
+  grid.setState(g.index(g.cellOf(wall)), CellState::kOccupied);
+  grid.setState(g.index(g.cellOf(floor)), CellState::kFree);
+  // Grown by 3 cells on the left and 2 below, cut by 5 on the right.
+  const GridGeometry bigger(Vec2(0.7, -2.2), 0.1, 18, 15);
+  const OccupancyGrid moved = grid.reframed(bigger);
+  const GridGeometry& m = moved.geometry();
+  EXPECT_EQ(m.width(), 18);
+  EXPECT_EQ(m.height(), 15);
+  EXPECT_EQ(moved.state(m.cellOf(wall)), CellState::kOccupied);
+  EXPECT_EQ(moved.state(m.cellOf(floor)), CellState::kFree);
+  EXPECT_EQ(moved.logOdds(m.index(m.cellOf(wall))), grid.logOdds(g.index(g.cellOf(wall))));
+  std::size_t known = 0;
+  for (CellState s : moved.states()) known += s != CellState::kUnknown;
+  EXPECT_EQ(known, 2u);
+  // Cropped to exclude the wall: it is gone, the floor stays.
+  const OccupancyGrid cropped = grid.reframed(GridGeometry(Vec2(1.1, -1.9), 0.1, 5, 5));
+  std::size_t known_cropped = 0;
+  for (CellState s : cropped.states()) known_cropped += s != CellState::kUnknown;
+  EXPECT_EQ(known_cropped, 1u);
+  EXPECT_EQ(cropped.state(cropped.geometry().cellOf(floor)), CellState::kFree);
+}
+
+TEST(OccupancyGridReframe, RejectsAnotherResolutionOrAnOffLatticeOrigin) {
+  const OccupancyGrid grid(GridGeometry(Vec2(0, 0), 0.05, 10, 10));
+  EXPECT_THROW(grid.reframed(GridGeometry(Vec2(0, 0), 0.1, 10, 10)), InvalidArgument);
+  EXPECT_THROW(grid.reframed(GridGeometry(Vec2(0.02, 0), 0.05, 10, 10)), InvalidArgument);
+  EXPECT_THROW(GridGeometry(Vec2(std::nan(""), 0), 0.05, 10, 10), InvalidArgument);
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 #include "roomscout/core/grid_geometry.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "roomscout/core/errors.hpp"
 
@@ -39,6 +40,7 @@ GridGeometry::GridGeometry(const Vec2& origin_m, double resolution_m, int width,
     throw InvalidArgument("grid resolution must be a positive number of metres per cell");
   }
   if (width < 0 || height < 0) throw InvalidArgument("grid size must not be negative");
+  if (!origin_m.allFinite()) throw InvalidArgument("grid origin must be finite");
 }
 
 }  // namespace roomscout

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "roomscout/core/errors.hpp"
 
@@ -50,6 +51,33 @@ void OccupancyGrid::setState(std::size_t index, CellState state) {
     case CellState::kOccupied: log_odds_[index] = max_; break;
   }
   states_[index] = classify(log_odds_[index]);
+}
+
+OccupancyGrid OccupancyGrid::reframed(const GridGeometry& geometry) const {
+  const double res = geometry_.resolution_m();
+  if (std::abs(geometry.resolution_m() - res) > 1e-9 * res) {
+    throw InvalidArgument("reframed grid: resolution " + std::to_string(geometry.resolution_m()) +
+                          " m differs from the map's " + std::to_string(res) + " m");
+  }
+  const Vec2 shift_cells = (geometry.origin_m() - geometry_.origin_m()) / res;
+  const double sx = std::round(shift_cells.x()), sy = std::round(shift_cells.y());
+  if (std::abs(shift_cells.x() - sx) > 1e-6 || std::abs(shift_cells.y() - sy) > 1e-6) {
+    throw InvalidArgument("reframed grid: origin is not a whole number of cells from the map's");
+  }
+  // Keep this grid's origin exactly where the lattices coincide, so that cellOf() agrees.
+  const GridGeometry aligned(geometry_.origin_m() + Vec2(sx * res, sy * res), res, geometry.width(),
+                             geometry.height());
+  OccupancyGrid out(aligned, options_);
+  const int dx = static_cast<int>(sx), dy = static_cast<int>(sy);
+  const int x0 = std::max(0, -dx), x1 = std::min(aligned.width(), geometry_.width() - dx);
+  for (int y = std::max(0, -dy); y < std::min(aligned.height(), geometry_.height() - dy); ++y) {
+    if (x1 <= x0) break;
+    const std::size_t from = geometry_.index({x0 + dx, y + dy});
+    const std::size_t to = aligned.index({x0, y});
+    std::copy_n(log_odds_.begin() + from, x1 - x0, out.log_odds_.begin() + to);
+    std::copy_n(states_.begin() + from, x1 - x0, out.states_.begin() + to);
+  }
+  return out;
 }
 
 }  // namespace roomscout

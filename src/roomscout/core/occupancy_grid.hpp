@@ -61,6 +61,12 @@ class OccupancyGrid {
   /// Marks every cell with the given state (used to build grids from existing maps).
   void setState(std::size_t index, CellState state);
 
+  /// This map laid on another geometry of the same resolution whose origin lies a whole number
+  /// of cells away (as a SLAM map that grows or is cropped): cells both cover keep their
+  /// log-odds, the others are unknown. Throws InvalidArgument for another resolution or an
+  /// origin off the cell lattice.
+  OccupancyGrid reframed(const GridGeometry& geometry) const;
+
   /// Cell states as one byte per cell, row-major (for bulk analysis).
   const std::vector<CellState>& states() const { return states_; }
   /// The same bytes as plain integers (the CellState values), for counting and comparing.
