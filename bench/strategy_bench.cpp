@@ -8,7 +8,6 @@
 
 #include "roomscout/exploration/strategy_registry.hpp"
 #include "roomscout/io/builtin_worlds.hpp"
-#include "roomscout/sim/analysis_maps_observer.hpp"
 #include "roomscout/sim/episode.hpp"
 
 namespace roomscout {
@@ -21,9 +20,8 @@ void BM_StrategyDecisionLargeOffice(benchmark::State& state, const std::string& 
     sim::EpisodeConfig config;
     config.episode.max_time_s = 900.0;
     config.resolve();
-    sim::AnalysisMapsObserver semantic(sim::AnalysisMapKind::kSemantic);
     auto strategy = createStrategy(method, 1);
-    result = sim::runEpisode(model, config, *strategy, 1, {}, {&semantic});
+    result = sim::runEpisode(model, config, *strategy, 1);
   }
   state.counters["decision_median_ms"] = result.decision.median_ms;
   state.counters["decision_p95_ms"] = result.decision.p95_ms;

@@ -14,7 +14,6 @@
 
 #include "roomscout/exploration/strategy_registry.hpp"
 #include "roomscout/io/map_server.hpp"
-#include "roomscout/sim/analysis_maps_observer.hpp"
 #include "roomscout/sim/episode.hpp"
 
 namespace fs = std::filesystem;
@@ -35,8 +34,7 @@ sim::EpisodeResult explore(const fs::path& yaml, const std::string& method, std:
   config.resolve();
   const sim::WorldModel model(world, config.world);
   auto strategy = createStrategy(method, seed);
-  sim::AnalysisMapsObserver semantic(sim::AnalysisMapKind::kSemantic);
-  return sim::runEpisode(model, config, *strategy, seed, {}, {&semantic});
+  return sim::runEpisode(model, config, *strategy, seed);
 }
 
 class ExploreBenchMaps : public ::testing::TestWithParam<std::tuple<std::string, std::string>> {};

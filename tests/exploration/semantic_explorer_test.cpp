@@ -12,7 +12,6 @@
 
 #include "roomscout/exploration/strategy_registry.hpp"
 #include "roomscout/maps/semantic_map.hpp"
-#include "roomscout/sim/analysis_maps_observer.hpp"
 #include "roomscout/sim/episode.hpp"
 #include "roomscout/sim/exploration_truth.hpp"
 
@@ -785,7 +784,7 @@ double westKnownOnLeaving(const std::string& method, std::uint64_t seed) {
   config.episode.max_time_s = 900.0;
   const sim::WorldModel model(world, config.world);
   const GridGeometry geometry = sim::mapGeometryFor(model, config.mapping.resolution_m);
-  const sim::ExplorationTruth truth(model, geometry, config.costmap.lethalRadius_m());
+  const sim::ExplorationTruth truth(model, geometry, config.explorer.costmap.lethalRadius_m());
   struct Probe final : sim::EpisodeObserver {
     const sim::ExplorationTruth* truth = nullptr;
     double fraction = -1.0;
@@ -805,9 +804,8 @@ double westKnownOnLeaving(const std::string& method, std::uint64_t seed) {
     const std::vector<double>& updateTimes_ms() const override { return times; }
   } probe;
   probe.truth = &truth;
-  sim::AnalysisMapsObserver semantic(sim::AnalysisMapKind::kSemantic);
   auto strategy = createStrategy(method, seed);
-  const sim::EpisodeResult r = sim::runEpisode(model, config, *strategy, seed, {}, {&semantic, &probe});
+  const sim::EpisodeResult r = sim::runEpisode(model, config, *strategy, seed, {}, {&probe});
   EXPECT_GE(r.exploration_rate, 0.98) << method;
   return probe.fraction;
 }
@@ -848,9 +846,8 @@ TEST(SemanticExplorerTest, LooksIntoTheLastCornersOfItsRoomInsteadOfEndingShort)
   config.episode.max_time_s = 300.0;
   const sim::WorldModel model(w, config.world);
   for (const std::uint64_t seed : {1u, 2u}) {
-    sim::AnalysisMapsObserver semantic(sim::AnalysisMapKind::kSemantic);
     auto strategy = createStrategy("semantic", seed);
-    const sim::EpisodeResult r = sim::runEpisode(model, config, *strategy, seed, {}, {&semantic});
+    const sim::EpisodeResult r = sim::runEpisode(model, config, *strategy, seed);
     EXPECT_GE(r.exploration_rate, 0.98) << "seed " << seed;
     EXPECT_FALSE(r.timed_out) << "seed " << seed;
   }

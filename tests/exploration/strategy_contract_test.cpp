@@ -70,12 +70,12 @@ TEST_P(StrategyContract, FullyKnownMapEndsAtOnce) {
   config.resolve();
   const sim::WorldModel model(world, config.world);
   const GridGeometry geometry = sim::mapGeometryFor(model, config.mapping.resolution_m);
-  const sim::ExplorationTruth truth(model, geometry, config.costmap.lethalRadius_m());
+  const sim::ExplorationTruth truth(model, geometry, config.explorer.costmap.lethalRadius_m());
   OccupancyGrid grid(geometry, config.mapping);
   for (std::size_t i = 0; i < geometry.cellCount(); ++i) {
     grid.setState(i, truth.trulyFree()[i] ? CellState::kFree : CellState::kOccupied);
   }
-  Costmap costmap(config.costmap);
+  Costmap costmap(config.explorer.costmap);
   costmap.update(grid);
   auto s = createStrategy(GetParam(), 3);
   bool done = false;

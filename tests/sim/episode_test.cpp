@@ -7,7 +7,6 @@
 #include "roomscout/exploration/strategy_registry.hpp"
 #include "roomscout/io/builtin_worlds.hpp"
 #include "roomscout/io/run_outputs.hpp"
-#include "roomscout/sim/analysis_maps_observer.hpp"
 #include "test_worlds.hpp"
 
 namespace roomscout::sim {
@@ -56,9 +55,8 @@ TEST_P(EveryMethodExploresTheHouses, ReachesAtLeast98PercentAndEnds) {
   EpisodeConfig config;
   config.resolve();
   const WorldModel model(io::loadBuiltinWorld(world_name), config.world);
-  AnalysisMapsObserver semantic(AnalysisMapKind::kSemantic);
   auto strategy = createStrategy(method, 1);
-  const EpisodeResult r = runEpisode(model, config, *strategy, 1, {}, {&semantic});
+  const EpisodeResult r = runEpisode(model, config, *strategy, 1);
   EXPECT_GE(r.exploration_rate, 0.98);
   EXPECT_TRUE(r.t98_s.has_value());
   // The count up to T98 is the count of the sample that reached 98 %: never more than the

@@ -107,7 +107,7 @@ TEST(OracleTour, LongerRangeNeedsNoLongerTour) {
 TEST(OracleTour, OptionsFollowTheEpisodeConfig) {
   EpisodeConfig config;
   config.robot.radius_m = 0.2;
-  config.costmap.inflation_margin_m = 0.1;
+  config.explorer.costmap.inflation_margin_m = 0.1;
   config.laser.range_max_m = 6.0;
   config.mapping.resolution_m = 0.1;
   const OracleTourOptions options = oracleTourOptionsFor(config);

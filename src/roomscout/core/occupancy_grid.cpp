@@ -53,31 +53,43 @@ void OccupancyGrid::setState(std::size_t index, CellState state) {
   states_[index] = classify(log_odds_[index]);
 }
 
-OccupancyGrid OccupancyGrid::reframed(const GridGeometry& geometry) const {
+Cell OccupancyGrid::latticeOffset(const GridGeometry& other) const {
   const double res = geometry_.resolution_m();
-  if (std::abs(geometry.resolution_m() - res) > 1e-9 * res) {
-    throw InvalidArgument("reframed grid: resolution " + std::to_string(geometry.resolution_m()) +
-                          " m differs from the map's " + std::to_string(res) + " m");
+  if (std::abs(other.resolution_m() - res) > 1e-9 * res) {
+    throw InvalidArgument("grid of resolution " + std::to_string(other.resolution_m()) +
+                          " m laid on a map of resolution " + std::to_string(res) + " m");
   }
-  const Vec2 shift_cells = (geometry.origin_m() - geometry_.origin_m()) / res;
+  const Vec2 shift_cells = (other.origin_m() - geometry_.origin_m()) / res;
   const double sx = std::round(shift_cells.x()), sy = std::round(shift_cells.y());
   if (std::abs(shift_cells.x() - sx) > 1e-6 || std::abs(shift_cells.y() - sy) > 1e-6) {
-    throw InvalidArgument("reframed grid: origin is not a whole number of cells from the map's");
+    throw InvalidArgument("grid origin is not a whole number of cells from the map's");
   }
+  return {static_cast<int>(sx), static_cast<int>(sy)};
+}
+
+OccupancyGrid OccupancyGrid::reframed(const GridGeometry& geometry) const {
+  const Cell d = latticeOffset(geometry);
   // Keep this grid's origin exactly where the lattices coincide, so that cellOf() agrees.
-  const GridGeometry aligned(geometry_.origin_m() + Vec2(sx * res, sy * res), res, geometry.width(),
+  const double res = geometry_.resolution_m();
+  const GridGeometry aligned(geometry_.origin_m() + Vec2(d.x * res, d.y * res), res, geometry.width(),
                              geometry.height());
   OccupancyGrid out(aligned, options_);
-  const int dx = static_cast<int>(sx), dy = static_cast<int>(sy);
-  const int x0 = std::max(0, -dx), x1 = std::min(aligned.width(), geometry_.width() - dx);
-  for (int y = std::max(0, -dy); y < std::min(aligned.height(), geometry_.height() - dy); ++y) {
-    if (x1 <= x0) break;
-    const std::size_t from = geometry_.index({x0 + dx, y + dy});
-    const std::size_t to = aligned.index({x0, y});
-    std::copy_n(log_odds_.begin() + from, x1 - x0, out.log_odds_.begin() + to);
-    std::copy_n(states_.begin() + from, x1 - x0, out.states_.begin() + to);
-  }
+  out.copyCells(*this, geometry_.bounds());
   return out;
+}
+
+void OccupancyGrid::copyCells(const OccupancyGrid& source, const CellRect& rect) {
+  // Source cell (x, y) lands on this grid's cell (x - d.x, y - d.y).
+  const Cell d = source.latticeOffset(geometry_);
+  const CellRect in_source = rect.clippedTo(source.geometry_.width(), source.geometry_.height());
+  const int x0 = std::max(in_source.min_x, d.x), x1 = std::min(in_source.max_x, d.x + geometry_.width());
+  const int y0 = std::max(in_source.min_y, d.y), y1 = std::min(in_source.max_y, d.y + geometry_.height());
+  for (int y = y0; y < y1 && x0 < x1; ++y) {
+    const std::size_t from = source.geometry_.index({x0, y});
+    const std::size_t to = geometry_.index({x0 - d.x, y - d.y});
+    std::copy_n(source.log_odds_.begin() + from, x1 - x0, log_odds_.begin() + to);
+    std::copy_n(source.states_.begin() + from, x1 - x0, states_.begin() + to);
+  }
 }
 
 }  // namespace roomscout

@@ -66,6 +66,9 @@ class OccupancyGrid {
   /// log-odds, the others are unknown. Throws InvalidArgument for another resolution or an
   /// origin off the cell lattice.
   OccupancyGrid reframed(const GridGeometry& geometry) const;
+  /// Copies the cells of `source` inside `rect` (source cells) onto the cells at the same map
+  /// positions here, where this grid has them. Same conditions as reframed().
+  void copyCells(const OccupancyGrid& source, const CellRect& rect);
 
   /// Cell states as one byte per cell, row-major (for bulk analysis).
   const std::vector<CellState>& states() const { return states_; }
@@ -82,6 +85,9 @@ class OccupancyGrid {
     // free_threshold < 0 < occupied_threshold (validated), so at most one term is 1.
     return static_cast<CellState>((l > occupied_threshold_) * 2 + (l < free_threshold_));
   }
+
+  /// Cells from this grid's cell (0,0) to `other`'s; throws unless the lattices coincide.
+  Cell latticeOffset(const GridGeometry& other) const;
 
   GridGeometry geometry_;
   OccupancyGridOptions options_;

@@ -19,9 +19,6 @@ nlohmann::json EpisodeSetup::optionsJson() {
   options[method] = io::parametersToJson(strategy->parameters());
   for (const ParameterGroup& g : cloud.groups())
     options[g.name] = io::parametersToJson(g.parameters);
-  options["maps"] = io::parametersToJson(maps.parameters());
-  options["segmentation"] = io::parametersToJson(maps.segmentation.parameters());
-  options["topology"] = io::parametersToJson(maps.topology.parameters());
   return options;
 }
 
@@ -33,9 +30,6 @@ EpisodeSetup makeEpisodeSetup(std::string_view method, std::uint64_t seed,
   setup.strategy = createStrategy(method, seed);
   std::vector<ParameterGroup> groups = setup.config.groups();
   for (ParameterGroup& g : setup.cloud.groups()) groups.push_back(std::move(g));
-  groups.push_back({"maps", setup.maps.parameters()});
-  groups.push_back({"segmentation", setup.maps.segmentation.parameters()});
-  groups.push_back({"topology", setup.maps.topology.parameters()});
   // Every method has a group of its own, so that one config file serves all methods.
   std::vector<std::unique_ptr<ExplorationStrategy>> others;
   for (const StrategyEntry& e : strategyRegistry()) {

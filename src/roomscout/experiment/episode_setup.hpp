@@ -13,7 +13,6 @@
 
 #include "roomscout/exploration/exploration_strategy.hpp"
 #include "roomscout/io/pcd_io.hpp"
-#include "roomscout/sim/analysis_maps_observer.hpp"
 #include "roomscout/sim/episode.hpp"
 #include "roomscout/sim/point_cloud_observer.hpp"
 
@@ -41,7 +40,6 @@ struct EpisodeSetup {
   sim::EpisodeConfig config;
   std::unique_ptr<ExplorationStrategy> strategy;
   sim::PointCloudObserverOptions cloud;
-  sim::AnalysisMapsOptions maps;
 
   /// Every resolved option as metrics.json's `options`: {group: {name: value}}, the
   /// method's own group included (other methods' groups are not).

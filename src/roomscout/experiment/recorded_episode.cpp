@@ -10,7 +10,7 @@
 #include "roomscout/io/pcd_io.hpp"
 #include "roomscout/io/point_cloud_render.hpp"
 #include "roomscout/io/run_outputs.hpp"
-#include "roomscout/sim/analysis_maps_observer.hpp"
+#include "roomscout/explorer/explorer.hpp"
 #include "roomscout/sim/point_cloud_observer.hpp"
 
 namespace roomscout::experiment {
@@ -29,23 +29,18 @@ RecordedEpisode runRecordedEpisode(const sim::WorldModel& model, EpisodeSetup& s
                                    const std::filesystem::path& directory,
                                    const sim::EpisodeProgress& progress) {
   io::ensureWritableDirectory(directory);
-  // Declared before the observers, which wait for their jobs when they go. The point cloud on
-  // one worker, the rooms and skeleton on another, both below the episode's thread: on two
-  // cores the episode keeps a core and the workers share the other and what it leaves
-  // (large_office, rrt: 28.7 s median wall time instead of 32.3 s with one worker; mmpf the
-  // same, 28.5 s against 28.9 s. With normal priority, two workers made mmpf slower: 39-43 s
-  // instead of 33-37 s, session 12).
-  sim::MapWorker cloud_worker(settings.background_maps);
-  sim::MapWorker maps_worker(settings.background_maps);
+  // The point cloud on one worker, the rooms and skeleton on the Explorer's, both below the
+  // episode's thread: on two cores the episode keeps a core and the workers share the other
+  // and what it leaves. Declared before the observer, which waits for its jobs when it goes.
+  MapWorker cloud_worker(settings.background_maps);
   sim::PointCloudObserver cloud(model, setup.cloud, setup.seed ^ 0x5851F42D4C957F2Dull, &cloud_worker);
-  // Rooms first: the first observer with a semantic map feeds the strategy, which needs
-  // them up to date at each decision.
-  sim::AnalysisMapsObserver semantic(sim::AnalysisMapKind::kSemantic, setup.maps, nullptr,
-                                     setup.strategy->readsRooms() ? nullptr : &maps_worker);
-  sim::AnalysisMapsObserver topological(sim::AnalysisMapKind::kTopological, setup.maps, &semantic, &maps_worker);
+  setup.config.resolve();
+  ExplorerOptions options = setup.config.explorer;
+  options.all_maps = true;
+  options.background_maps = settings.background_maps;
+  Explorer explorer(*setup.strategy, options);
   RecordedEpisode recorded;
-  recorded.result = sim::runEpisode(model, setup.config, *setup.strategy, setup.seed, progress,
-                                    {&semantic, &topological, &cloud});
+  recorded.result = sim::runEpisode(model, setup.config, explorer, setup.seed, progress, {&cloud});
   const sim::EpisodeResult& result = recorded.result;
 
   const sim::World& world = model.world();
@@ -72,7 +67,7 @@ RecordedEpisode runRecordedEpisode(const sim::WorldModel& model, EpisodeSetup& s
     record["built"] = cloud.description();
   }
   const nlohmann::json analysis_maps =
-      io::writeAnalysisMaps(directory, semantic, topological, result.map, model);
+      io::writeAnalysisMaps(directory, *explorer.roomMap(), *explorer.skeletonMap(), result.map, model);
   for (const auto& [name, summary] : analysis_maps.items()) info.maps[name] = summary;
   io::writeRunOutputs(directory, info, result);
   recorded.metrics = io::metricsJson(info, result);

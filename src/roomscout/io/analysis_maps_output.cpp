@@ -18,8 +18,8 @@ cv::Mat groundTruthRoomLabels(const OccupancyGrid& grid, const sim::WorldModel& 
   return labels;
 }
 
-nlohmann::json writeAnalysisMaps(const std::filesystem::path& directory, const sim::AnalysisMapsObserver& semantic,
-                                 const sim::AnalysisMapsObserver& topological, const OccupancyGrid& grid,
+nlohmann::json writeAnalysisMaps(const std::filesystem::path& directory, const AnalysisMap& semantic,
+                                 const AnalysisMap& topological, const OccupancyGrid& grid,
                                  const sim::WorldModel& world) {
   const SemanticMap& rooms = *semantic.semanticMap();
   const TopologicalMap& topo = topological.topologicalMap();

@@ -7,7 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "roomscout/core/occupancy_grid.hpp"
-#include "roomscout/sim/analysis_maps_observer.hpp"
+#include "roomscout/explorer/analysis_maps.hpp"
 #include "roomscout/sim/world_model.hpp"
 
 namespace roomscout::io {
@@ -19,8 +19,8 @@ cv::Mat groundTruthRoomLabels(const OccupancyGrid& grid, const sim::WorldModel& 
 /// Writes topology.json/.png and semantic.json/.png/_labels.png into `directory`. Returns a
 /// summary for metrics.json's "maps": counts, and for worlds with rooms the segmentation's
 /// score against them (also stored in semantic.json as "ground_truth_score").
-nlohmann::json writeAnalysisMaps(const std::filesystem::path& directory, const sim::AnalysisMapsObserver& semantic,
-                                 const sim::AnalysisMapsObserver& topological, const OccupancyGrid& grid,
+nlohmann::json writeAnalysisMaps(const std::filesystem::path& directory, const AnalysisMap& semantic,
+                                 const AnalysisMap& topological, const OccupancyGrid& grid,
                                  const sim::WorldModel& world);
 
 }  // namespace roomscout::io

@@ -54,73 +54,32 @@ std::vector<ParameterRef> PathFollowerOptions::parameters() {
   };
 }
 
-PathFollower::PathFollower(const PathFollowerOptions& options) : options_(options) {
+PathFollower::PathFollower(const PathFollowerOptions& options)
+    : options_(options), progress_(2.0 * options.lookahead_m) {
   options_.validate();
 }
 
-void PathFollower::setPath(const Path& path) {
-  path_ = path;
-  arc_length_m_.resize(path_.waypoints_m.size());
-  double s_m = 0.0;
-  for (std::size_t i = 0; i < path_.waypoints_m.size(); ++i) {
-    if (i > 0) s_m += (path_.waypoints_m[i] - path_.waypoints_m[i - 1]).norm();
-    arc_length_m_[i] = s_m;
-  }
-  progress_ = 0;
-  segment_ = 0;
-  progress_m_ = 0.0;
-}
+void PathFollower::setPath(const Path& path) { progress_.reset(path); }
 
 void PathFollower::clear() { setPath(Path{}); }
 
 bool PathFollower::reached(const Pose2& robot) const {
   if (!hasPath()) return false;
-  return (path_.waypoints_m.back() - robot.position()).norm() <= options_.goal_tolerance_m;
-}
-
-void PathFollower::updateProgress(const Vec2& robot_m) {
-  const std::vector<Vec2>& w = path_.waypoints_m;
-  if (w.size() < 2) return;
-  // Only segments starting within two lookaheads of the current progress are candidates, so
-  // that a later part of the path passing close by (a U-turn) cannot pull the progress ahead,
-  // while a hairpin the robot turned back on before its tip is still picked up.
-  const double window_end_m = progress_m_ + 2.0 * options_.lookahead_m;
-  double best_distance_m = std::numeric_limits<double>::infinity();
-  std::size_t best_segment = segment_;
-  double best_t = 0.0;
-  for (std::size_t i = segment_; i + 1 < w.size() && arc_length_m_[i] <= window_end_m; ++i) {
-    const Vec2 d = w[i + 1] - w[i];
-    const double length2 = d.squaredNorm();
-    if (!(length2 > 0.0)) continue;
-    // On the current segment only the part beyond the progress point counts; otherwise a
-    // robot turning back at a hairpin would stay matched to the leg it came along.
-    const double t_min =
-        i == segment_ ? std::clamp((progress_m_ - arc_length_m_[i]) / std::sqrt(length2), 0.0, 1.0)
-                      : 0.0;
-    const double t = std::clamp((robot_m - w[i]).dot(d) / length2, t_min, 1.0);
-    const double distance_m = (robot_m - (w[i] + t * d)).norm();
-    if (distance_m < best_distance_m) {
-      best_distance_m = distance_m;
-      best_segment = i;
-      best_t = t;
-    }
-  }
-  segment_ = best_segment;
-  const double s_m =
-      arc_length_m_[segment_] + best_t * (arc_length_m_[segment_ + 1] - arc_length_m_[segment_]);
-  progress_m_ = std::max(progress_m_, s_m);
-  progress_ = std::max(progress_, best_t < 0.5 ? segment_ : segment_ + 1);
+  return (path().waypoints_m.back() - robot.position()).norm() <= options_.goal_tolerance_m;
 }
 
 Vec2 PathFollower::carrot(const Vec2& robot_m) const {
-  const std::vector<Vec2>& w = path_.waypoints_m;
+  const std::vector<Vec2>& w = path().waypoints_m;
+  const std::vector<double>& arc_m = progress_.arcLength_m();
+  const std::size_t segment = progress_.segment();
+  const double progress_m = progress_.progress_m();
   const double lookahead2 = options_.lookahead_m * options_.lookahead_m;
-  for (std::size_t i = segment_; i + 1 < w.size(); ++i) {
-    const double length_m = arc_length_m_[i + 1] - arc_length_m_[i];
+  for (std::size_t i = segment; i + 1 < w.size(); ++i) {
+    const double length_m = arc_m[i + 1] - arc_m[i];
     if (!(length_m > 0.0)) continue;
     // The part of the segment beyond the progress point.
     const double t0 =
-        i == segment_ ? std::clamp((progress_m_ - arc_length_m_[i]) / length_m, 0.0, 1.0) : 0.0;
+        i == segment ? std::clamp((progress_m - arc_m[i]) / length_m, 0.0, 1.0) : 0.0;
     const Vec2 a = w[i] + t0 * (w[i + 1] - w[i]);
     const Vec2 d = w[i + 1] - a;
     const Vec2 f = a - robot_m;
@@ -138,7 +97,7 @@ Vec2 PathFollower::carrot(const Vec2& robot_m) const {
 VelocityCommand PathFollower::compute(const Pose2& robot) {
   if (!hasPath() || reached(robot)) return {};
   const Vec2 position = robot.position();
-  updateProgress(position);
+  progress_.update(position);
 
   const Vec2 to_carrot = carrot(position) - position;
   if (to_carrot.norm() < 1e-9) return {};
@@ -153,7 +112,8 @@ VelocityCommand PathFollower::compute(const Pose2& robot) {
   }
   command.angular_radps = std::clamp(options_.heading_gain * error_rad, -max_w, max_w);
   const double remaining_m =
-      std::max((path_.waypoints_m.back() - position).norm(), arc_length_m_.back() - progress_m_);
+      std::max((path().waypoints_m.back() - position).norm(),
+               progress_.arcLength_m().back() - progress_.progress_m());
   const double approach_mps = std::max(kMinApproachSpeed_mps, remaining_m / kApproachTime_s);
   command.linear_mps =
       std::min(options_.max_linear_speed_mps * std::max(0.0, std::cos(error_rad)), approach_mps);

@@ -6,6 +6,7 @@
 #include "roomscout/core/geometry.hpp"
 #include "roomscout/core/parameters.hpp"
 #include "roomscout/planning/path.hpp"
+#include "roomscout/planning/path_progress.hpp"
 
 namespace roomscout {
 
@@ -35,27 +36,21 @@ class PathFollower {
 
   void setPath(const Path& path);
   void clear();
-  bool hasPath() const { return !path_.waypoints_m.empty(); }
-  const Path& path() const { return path_; }
+  bool hasPath() const { return !progress_.empty(); }
+  const Path& path() const { return progress_.path(); }
   /// Index of the waypoint nearest the robot that the follower has progressed to.
-  std::size_t progressIndex() const { return progress_; }
+  std::size_t progressIndex() const { return progress_.index(); }
 
   VelocityCommand compute(const Pose2& robot);
   bool reached(const Pose2& robot) const;
 
  private:
-  /// Moves the progress forward to the robot's projection on the path (never backwards).
-  void updateProgress(const Vec2& robot_m);
   /// Pure-pursuit target: the first point along the path beyond the progress that lies
   /// lookahead_m from the robot, or the path's end.
   Vec2 carrot(const Vec2& robot_m) const;
 
   PathFollowerOptions options_;
-  Path path_;
-  std::size_t progress_ = 0;
-  std::vector<double> arc_length_m_;  ///< arc length of each waypoint from the first [m]
-  std::size_t segment_ = 0;           ///< segment (from waypoint segment_) the robot is on
-  double progress_m_ = 0.0;           ///< arc length of the robot's projection on the path [m]
+  PathProgress progress_;  ///< searched within two lookaheads of the current progress
 };
 
 }  // namespace roomscout

@@ -1,7 +1,8 @@
 #pragma once
-// One exploration episode in the simulator: the robot senses, maps, asks its strategy for
-// goals, plans and drives until the strategy declares the end or time runs out, while the
-// harness scores the map against ground truth (DESIGN "Metrics").
+// One exploration episode in the simulator: the robot senses and maps, hands the map to the
+// library's Explorer as a robot's loop would, and drives the paths it commands until it
+// declares the end or time runs out, while the harness scores the map against ground truth
+// (DESIGN "Metrics").
 
 #include <cstdint>
 #include <functional>
@@ -12,8 +13,7 @@
 
 #include "roomscout/core/occupancy_grid.hpp"
 #include "roomscout/exploration/exploration_strategy.hpp"
-#include "roomscout/planning/astar_planner.hpp"
-#include "roomscout/planning/costmap.hpp"
+#include "roomscout/explorer/explorer.hpp"
 #include "roomscout/planning/path_follower.hpp"
 #include "roomscout/sim/episode_observer.hpp"
 #include "roomscout/sim/laser_simulator.hpp"
@@ -22,37 +22,44 @@
 
 namespace roomscout::sim {
 
+/// How the simulator publishes its map to the Explorer.
+enum class MapMode {
+  kFixed,    ///< the whole world's extent from the start
+  kGrowing,  ///< as SLAM packages do: the known area's bounding box plus map_margin_m, the
+             ///< origin moving as the map grows
+};
+
 struct EpisodeOptions {
   double dt_s = 0.05;                  ///< simulation and control step [s]
   double max_time_s = 0.0;             ///< simulated time limit [s]; 0 = 600 s + 5 s per m^2
                                        ///< of reachable floor
   double metrics_period_s = 1.0;       ///< how often the exploration rate is sampled [s]
   double completion_rate = 0.98;       ///< rate that counts as fully explored (T98, L98)
-  double stuck_timeout_s = 2.0;        ///< commanded motion blocked this long: recovery [s]
-  double no_progress_timeout_s = 45.0; ///< path to the goal not shrinking this long: goal failed [s]
-  double recovery_time_s = 1.5;        ///< how long a recovery backs off [s]
-  double stall_timeout_s = 60.0;       ///< window of the stall watchdog [s]
-  double stall_radius_m = 4.0;         ///< a robot that stayed within this radius of where the
-                                       ///< window began, while the rate grew < 0.1 %, is stalled [m]
+  double stuck_timeout_s = 2.0;        ///< commanded motion blocked this long: the driver
+                                       ///< reports the robot blocked [s]
   double room_dwell_s = 2.0;           ///< time inside a room before it counts as entered [s]
-  int max_decisions_per_step = 8;      ///< failed goals tried in a row before waiting a second
+  std::string map_mode = "fixed";      ///< "fixed" or "growing" (MapMode)
+  double map_margin_m = 1.0;           ///< growing map: unknown border around the known area [m]
+  MapMode mapMode() const;
   void validate() const;
   std::vector<ParameterRef> parameters();
 };
 
 /// Every option an episode uses, grouped as in a config file. The robot group is
-/// authoritative for the radius and speed limits, which are mirrored into the others.
+/// authoritative for the radius and speed limits, which are mirrored into the others; the
+/// follower's goal tolerance and look-ahead and the laser's range are mirrored into the
+/// Explorer's watchdogs.
 struct EpisodeConfig {
   WorldModelOptions world;
   RobotOptions robot;
   LaserOptions laser;
   OccupancyGridOptions mapping;
-  CostmapOptions costmap;
-  AStarOptions planner;
   PathFollowerOptions follower;
   EpisodeOptions episode;
+  ExplorerOptions explorer;  ///< costmap, planner, watchdogs, rooms and skeleton graph
 
-  /// Copies the robot's radius and limits into the groups that mirror them.
+  /// Copies the robot's radius and limits, and the follower's and laser's options, into the
+  /// groups that mirror them.
   void resolve();
   /// Throws OptionError when any option is out of range.
   void validate() const;
@@ -99,7 +106,7 @@ struct EpisodeResult {
   int rooms_entered = 0;
   int goals = 0;
   int goal_failures = 0;
-  int recoveries = 0;
+  int recoveries = 0;                ///< back-offs after the robot was blocked
   int stalls = 0;                  ///< goals failed by the stall watchdog
   double wall_time_s = 0.0;
   TimingStats occupancy_update;    ///< per scan: ray tracing into the grid
@@ -108,16 +115,21 @@ struct EpisodeResult {
   std::map<std::string, TimingStats> map_updates;  ///< per observer, by its name()
   std::vector<CurveSample> curve;
   std::vector<TrajectorySample> trajectory;
-  OccupancyGrid map;
+  OccupancyGrid map;               ///< the final map as the Explorer saw it (growing: cropped)
 };
 
 /// Progress report for a caller's display: simulated time, limit, current rate.
 using EpisodeProgress = std::function<void(double time_s, double max_time_s, double rate)>;
 
-/// Runs one episode. The world model is shared read-only; everything else is created here
-/// from `config` and `seed`, so the same inputs give the same result. `observers` build
-/// further maps as the robot explores; the first one that has a semanticMap() feeds the
-/// strategy's ExplorationInput::semantic, when the strategy readsRooms().
+/// Runs one episode with `explorer`, made from config.explorer after config.resolve() and used
+/// up (read its rooms and skeleton graph afterwards). The world model is shared read-only;
+/// everything else is created here from `config` and `seed`, so the same inputs give the
+/// same result. `observers` build further maps (the point cloud) as the robot explores.
+EpisodeResult runEpisode(const WorldModel& world, EpisodeConfig config, Explorer& explorer, std::uint64_t seed,
+                         const EpisodeProgress& progress = {}, const std::vector<EpisodeObserver*>& observers = {});
+
+/// The same with an Explorer made here around `strategy`, building only the maps the
+/// strategy reads.
 EpisodeResult runEpisode(const WorldModel& world, EpisodeConfig config, ExplorationStrategy& strategy,
                          std::uint64_t seed, const EpisodeProgress& progress = {},
                          const std::vector<EpisodeObserver*>& observers = {});

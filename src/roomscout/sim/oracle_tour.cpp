@@ -60,7 +60,7 @@ OracleTourOptions oracleTourOptionsFor(const EpisodeConfig& config) {
   resolved.resolve();
   OracleTourOptions options;
   options.map_resolution_m = resolved.mapping.resolution_m;
-  options.lethal_radius_m = resolved.costmap.lethalRadius_m();
+  options.lethal_radius_m = resolved.explorer.costmap.lethalRadius_m();
   options.sensor_range_m = resolved.laser.range_max_m;
   return options;
 }

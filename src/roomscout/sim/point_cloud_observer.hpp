@@ -15,7 +15,7 @@
 #include "roomscout/sim/column_world.hpp"
 #include "roomscout/sim/episode_observer.hpp"
 #include "roomscout/sim/lidar_simulator.hpp"
-#include "roomscout/sim/map_worker.hpp"
+#include "roomscout/explorer/map_worker.hpp"
 
 namespace roomscout::sim {
 

@@ -1,4 +1,4 @@
-#include "roomscout/sim/map_worker.hpp"
+#include "roomscout/explorer/map_worker.hpp"
 
 #include <algorithm>
 #include <optional>
@@ -12,7 +12,7 @@
 #include <unistd.h>
 #endif
 
-namespace roomscout::sim {
+namespace roomscout {
 
 namespace {
 
@@ -37,8 +37,8 @@ void setNiceOfThisThread([[maybe_unused]] int nice) {
 
 MapWorker::MapWorker(bool background) {
   if (!background) return;
-  // Below the thread that makes the worker (the episode's, which runs the robot and is the
-  // episode's critical path, perhaps itself under `nice`): when the workers and it want more
+  // Below the thread that makes the worker (the explorer's, which runs the robot and is its
+  // critical path, perhaps itself under `nice`): when the workers and it want more
   // cores than there are, the workers wait.
   const std::optional<int> caller_nice = niceOfThisThread();
   thread_ = std::thread([this, caller_nice] {
@@ -116,4 +116,4 @@ void MapWorker::loop() {
   }
 }
 
-}  // namespace roomscout::sim
+}  // namespace roomscout

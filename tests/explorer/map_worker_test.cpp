@@ -1,7 +1,7 @@
 // MapWorker: jobs run in the order posted, errors come back from drain(), and a worker
 // without a thread runs each job at once.
 
-#include "roomscout/sim/map_worker.hpp"
+#include "roomscout/explorer/map_worker.hpp"
 
 #include <gtest/gtest.h>
 
@@ -17,7 +17,7 @@
 #include <unistd.h>
 #endif
 
-namespace roomscout::sim {
+namespace roomscout {
 namespace {
 
 TEST(MapWorker, RunsJobsOneAtATimeInTheOrderPosted) {
@@ -112,4 +112,4 @@ TEST(MapWorker, DestructorLetsQueuedJobsFinish) {
 }
 
 }  // namespace
-}  // namespace roomscout::sim
+}  // namespace roomscout

@@ -1,11 +1,11 @@
 #pragma once
-// A background thread for the map updates of an episode that nothing reads while the robot
-// explores (the point cloud, the skeleton graph, and the rooms when the strategy ignores
-// them), as a robot runs its map builders as nodes beside its planner. Jobs run one at a time
+// A background thread for the map updates that nothing reads while the robot explores (the
+// point cloud, the skeleton graph, and the rooms when the strategy ignores them), as a robot
+// runs its map builders as nodes beside its planner. Jobs run one at a time
 // in the order they were posted, so a map comes out the same as if every update had run at
 // once on the caller's thread; a worker made without a thread does exactly that. The thread
 // runs at a lower priority than the one that made it (Linux: nice + kNiceIncrement), so it
-// takes what the episode's thread leaves of the cores.
+// takes what the explorer's thread leaves of the cores.
 
 #include <condition_variable>
 #include <deque>
@@ -14,7 +14,7 @@
 #include <mutex>
 #include <thread>
 
-namespace roomscout::sim {
+namespace roomscout {
 
 class MapWorker {
  public:
@@ -50,4 +50,4 @@ class MapWorker {
   std::thread thread_;  ///< last: starts once the members above exist
 };
 
-}  // namespace roomscout::sim
+}  // namespace roomscout

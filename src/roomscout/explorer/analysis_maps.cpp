@@ -1,4 +1,4 @@
-#include "roomscout/sim/analysis_maps_observer.hpp"
+#include "roomscout/explorer/analysis_maps.hpp"
 
 #include <chrono>
 #include <cmath>
@@ -6,7 +6,7 @@
 #include "roomscout/core/errors.hpp"
 #include "roomscout/maps/grid_image.hpp"
 
-namespace roomscout::sim {
+namespace roomscout {
 
 void AnalysisMapsOptions::validate() const {
   if (!(period_s > 0.0)) throw OptionError("maps.period_s must be > 0");
@@ -24,8 +24,8 @@ std::vector<ParameterRef> AnalysisMapsOptions::parameters() {
   };
 }
 
-AnalysisMapsObserver::AnalysisMapsObserver(AnalysisMapKind kind, const AnalysisMapsOptions& options,
-                                           const AnalysisMapsObserver* rooms, MapWorker* worker)
+AnalysisMap::AnalysisMap(AnalysisMapKind kind, const AnalysisMapsOptions& options, const AnalysisMap* rooms,
+                         MapWorker* worker)
     : kind_(kind),
       options_(options),
       rooms_(kind == AnalysisMapKind::kTopological ? rooms : nullptr),
@@ -35,47 +35,47 @@ AnalysisMapsObserver::AnalysisMapsObserver(AnalysisMapKind kind, const AnalysisM
   options_.validate();
 }
 
-AnalysisMapsObserver::~AnalysisMapsObserver() {
+AnalysisMap::~AnalysisMap() {
   if (worker_ != nullptr) worker_->wait();  // jobs still queued refer to this observer
 }
 
-std::string_view AnalysisMapsObserver::name() const {
+std::string_view AnalysisMap::name() const {
   return kind_ == AnalysisMapKind::kSemantic ? "semantic" : "topological";
 }
 
-const SemanticMap* AnalysisMapsObserver::semanticMap() const {
+const SemanticMap* AnalysisMap::semanticMap() const {
   return kind_ == AnalysisMapKind::kSemantic ? &semantic_ : nullptr;
 }
 
-void AnalysisMapsObserver::onStep(const EpisodeSnapshot& snapshot) {
-  changed_ = changed_ || snapshot.grid_changed;
+void AnalysisMap::observe(const OccupancyGrid& grid, double time_s, bool grid_changed) {
+  changed_ = changed_ || grid_changed;
   if (kind_ == AnalysisMapKind::kTopological && rooms_ != nullptr) {
     // Follow the schedule of the rooms that label the nodes: rebuild right after they were
     // rebuilt, instead of counting the known cells a second time for the same decision.
     if (rooms_->updates_ != rooms_updates_seen_) {
       rooms_updates_seen_ = rooms_->updates_;
-      if (due_updates_++ % options_.topology_every == 0) update(snapshot.grid);
+      if (due_updates_++ % options_.topology_every == 0) update(grid);
     }
     return;
   }
-  if (snapshot.time_s + 1e-9 < next_update_s_ || !changed_) return;
-  next_update_s_ = snapshot.time_s + options_.period_s;
-  const std::size_t known = maps::knownCellCount(snapshot.grid);
-  const double res = snapshot.grid.geometry().resolution_m();
+  if (time_s + 1e-9 < next_update_s_ || !changed_) return;
+  next_update_s_ = time_s + options_.period_s;
+  const std::size_t known = maps::knownCellCount(grid);
+  const double res = grid.geometry().resolution_m();
   const double new_area_m2 =
       std::abs(static_cast<double>(known) - static_cast<double>(known_at_update_)) * res * res;
   if (updated_once_ && new_area_m2 < options_.min_new_area_m2) return;
   known_at_update_ = known;
   if (kind_ == AnalysisMapKind::kTopological && due_updates_++ % options_.topology_every != 0) return;
-  update(snapshot.grid);
+  update(grid);
 }
 
-void AnalysisMapsObserver::onFinish(const EpisodeSnapshot& snapshot) {
-  if (changed_ || snapshot.grid_changed || !updated_once_) update(snapshot.grid);
+void AnalysisMap::finish(const OccupancyGrid& grid, bool grid_changed) {
+  if (changed_ || grid_changed || !updated_once_) update(grid);
   if (worker_ != nullptr) worker_->drain();
 }
 
-void AnalysisMapsObserver::update(const OccupancyGrid& grid) {
+void AnalysisMap::update(const OccupancyGrid& grid) {
   ++updates_;
   changed_ = false;
   updated_once_ = true;
@@ -96,7 +96,7 @@ void AnalysisMapsObserver::update(const OccupancyGrid& grid) {
   });
 }
 
-void AnalysisMapsObserver::build(const cv::Mat& states, const GridGeometry& geometry,
+void AnalysisMap::build(const cv::Mat& states, const GridGeometry& geometry,
                                  std::shared_ptr<const SemanticMap> rooms) {
   const auto t0 = std::chrono::steady_clock::now();
   if (kind_ == AnalysisMapKind::kSemantic) {
@@ -108,4 +108,4 @@ void AnalysisMapsObserver::build(const cv::Mat& states, const GridGeometry& geom
   update_ms_.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
 }
 
-}  // namespace roomscout::sim
+}  // namespace roomscout

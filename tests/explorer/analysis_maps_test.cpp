@@ -1,16 +1,14 @@
-// The analysis maps observers: update schedule and the topology_every option.
+// The rooms and skeleton graph on their schedule: the topology_every option, a worker.
 
-#include "roomscout/sim/analysis_maps_observer.hpp"
+#include "roomscout/explorer/analysis_maps.hpp"
 
 #include <gtest/gtest.h>
 
 #include <opencv2/core.hpp>
 
 #include "roomscout/core/errors.hpp"
-#include "roomscout/sim/world_model.hpp"
-#include "test_worlds.hpp"
 
-namespace roomscout::sim {
+namespace roomscout {
 namespace {
 
 /// A 16 x 6 m map of three rooms in a row (walls with 1 m doors), revealed 1 m further to the
@@ -41,19 +39,15 @@ struct Observed {
 /// @param rooms_worker, skeleton_worker where each map is built (null: at once)
 Observed drive(const AnalysisMapsOptions& options, MapWorker* rooms_worker = nullptr,
                MapWorker* skeleton_worker = nullptr) {
-  const WorldModel model(testing::squareRoom(4.0));
-  AnalysisMapsObserver semantic(AnalysisMapKind::kSemantic, options, nullptr, rooms_worker);
-  AnalysisMapsObserver topological(AnalysisMapKind::kTopological, options, &semantic, skeleton_worker);
+  AnalysisMap semantic(AnalysisMapKind::kSemantic, options, nullptr, rooms_worker);
+  AnalysisMap topological(AnalysisMapKind::kTopological, options, &semantic, skeleton_worker);
   double t = 0.0;
   for (double seen_m = 2.0; seen_m <= 16.0; seen_m += 1.0, t += 1.0) {
     const OccupancyGrid grid = revealed(seen_m);
-    for (AnalysisMapsObserver* o : {&semantic, &topological})
-      o->onStep(EpisodeSnapshot{t, Pose2{}, grid, model, true});
+    for (AnalysisMap* m : {&semantic, &topological}) m->observe(grid, t, true);
   }
   const OccupancyGrid final_grid = revealed(16.0);
-  for (AnalysisMapsObserver* o : {&semantic, &topological}) {
-    o->onFinish(EpisodeSnapshot{t, Pose2{}, final_grid, model, true});
-  }
+  for (AnalysisMap* m : {&semantic, &topological}) m->finish(final_grid);
   return {semantic.updateTimes_ms().size(), topological.updateTimes_ms().size(),
           topological.topologicalMap(), semantic.semanticMap()->labels().clone()};
 }
@@ -68,7 +62,7 @@ void expectSameTopology(const TopologicalMap& a, const TopologicalMap& b) {
   for (std::size_t i = 0; i < a.edges().size(); ++i) EXPECT_EQ(a.edges()[i].polyline_m, b.edges()[i].polyline_m);
 }
 
-TEST(AnalysisMapsObserver, TopologyFollowsTheRoomsOrEveryNthOfTheirUpdates) {
+TEST(AnalysisMap, TopologyFollowsTheRoomsOrEveryNthOfTheirUpdates) {
   const Observed every = drive({});
   EXPECT_EQ(every.semantic_updates, 16u);  // 15 growing maps (>= 2 m^2 new each), then the end
   EXPECT_EQ(every.topological_updates, every.semantic_updates);
@@ -82,7 +76,7 @@ TEST(AnalysisMapsObserver, TopologyFollowsTheRoomsOrEveryNthOfTheirUpdates) {
   expectSameTopology(sparse.topology, every.topology);
 }
 
-TEST(AnalysisMapsObserver, MapsBuiltOnAWorkerAreThoseBuiltAtOnce) {
+TEST(AnalysisMap, MapsBuiltOnAWorkerAreThoseBuiltAtOnce) {
   const Observed at_once = drive({});
   ASSERT_GT(at_once.topology.edges().size(), 0u);
   double max_id = 0.0;
@@ -117,7 +111,7 @@ TEST(AnalysisMapsObserver, MapsBuiltOnAWorkerAreThoseBuiltAtOnce) {
   }
 }
 
-TEST(AnalysisMapsObserver, RejectsBadScheduleOptions) {
+TEST(AnalysisMap, RejectsBadScheduleOptions) {
   AnalysisMapsOptions options;
   options.topology_every = 0;
   EXPECT_THROW(options.validate(), OptionError);
@@ -128,4 +122,4 @@ TEST(AnalysisMapsObserver, RejectsBadScheduleOptions) {
 }
 
 }  // namespace
-}  // namespace roomscout::sim
+}  // namespace roomscout
