@@ -4,9 +4,11 @@
 
 #include <gtest/gtest.h>
 
+#include "roomscout/core/errors.hpp"
 #include "roomscout/exploration/strategy_registry.hpp"
 #include "roomscout/io/builtin_worlds.hpp"
 #include "roomscout/io/run_outputs.hpp"
+#include "roomscout/sim/exploration_truth.hpp"
 #include "test_worlds.hpp"
 
 namespace roomscout::sim {
@@ -151,6 +153,73 @@ TEST(Episode, BumpingIntoAnObstacleTheLaserCannotSeeRecoversAndEnds) {
   EXPECT_TRUE(r.t_done_s.has_value());
   // It never drove through the box.
   for (const TrajectorySample& s : r.trajectory) EXPECT_LT(s.pose.x_m, 2.5);
+}
+
+// The simulator drives the library's Explorer; before the Explorer existed it ran the same
+// loop itself. These are that loop's figures on the small house (seed 1, commit 4f9f329):
+// the Explorer reproduces them exactly.
+struct RecordedRun {
+  const char* method;
+  double t98_s, l98_m, t_done_s;
+  int goals, goal_failures, stalls, revisits;
+  friend void PrintTo(const RecordedRun& r, std::ostream* os) { *os << r.method; }
+};
+
+class ExplorerLoop : public ::testing::TestWithParam<RecordedRun> {};
+
+TEST_P(ExplorerLoop, ReproducesTheSimulatorsOwnLoopExactly) {
+  const RecordedRun& want = GetParam();
+  const EpisodeResult r = explore(io::loadBuiltinWorld("small_house"), want.method, 1);
+  ASSERT_TRUE(r.t98_s && r.l98_m && r.t_done_s);
+  EXPECT_EQ(*r.t98_s, want.t98_s);
+  EXPECT_EQ(*r.l98_m, want.l98_m);
+  EXPECT_EQ(*r.t_done_s, want.t_done_s);
+  EXPECT_EQ(r.goals, want.goals);
+  EXPECT_EQ(r.goal_failures, want.goal_failures);
+  EXPECT_EQ(r.stalls, want.stalls);
+  EXPECT_EQ(r.revisits, want.revisits);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    SmallHouse, ExplorerLoop,
+    ::testing::Values(RecordedRun{"nearest_frontier", 569.0000000000302, 120.67972575541211, 984.4499999996524, 123, 1, 0, 33},
+                      RecordedRun{"semantic", 421.00000000006145, 90.2040124860518, 830.7999999997921, 1275, 1, 1, 20},
+                      RecordedRun{"mmpf", 430.0000000000635, 91.46325810923796, 743.4499999998716, 84, 1, 0, 22},
+                      RecordedRun{"improved_rrt", 714.9999999998975, 146.28047059670536, 1282.0499999993817, 1622, 4, 1, 39}),
+    [](const auto& info) { return std::string(info.param.method); });
+
+// With the map published as SLAM packages publish it (the known area plus a margin, its origin
+// moving as it grows), the tree-based methods explore the house as they do on the fixed grid.
+class GrowingMap : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(GrowingMap, ExploresTheSmallHouseAsOnTheFixedGrid) {
+  EpisodeConfig config;
+  config.resolve();
+  const WorldModel model(io::loadBuiltinWorld("small_house"), config.world);
+  auto fixed_strategy = createStrategy(GetParam(), 2);
+  const EpisodeResult fixed = runEpisode(model, config, *fixed_strategy, 2);
+  config.episode.map_mode = "growing";
+  auto strategy = createStrategy(GetParam(), 2);
+  const EpisodeResult r = runEpisode(model, config, *strategy, 2);
+  EXPECT_GE(r.exploration_rate, 0.98);
+  EXPECT_FALSE(r.timed_out);
+  ASSERT_TRUE(r.l98_m && fixed.l98_m);
+  EXPECT_LT(*r.l98_m, 1.3 * *fixed.l98_m) << "fixed grid " << *fixed.l98_m << " m";
+  // The map it ends with is the published one: no larger than the world's grid.
+  EXPECT_LE(r.map.geometry().cellCount(), mapGeometryFor(model, config.mapping.resolution_m).cellCount());
+}
+
+INSTANTIATE_TEST_SUITE_P(TreeMethods, GrowingMap, ::testing::Values("semantic", "rrt", "improved_rrt"));
+
+TEST(Episode, RejectsAnUnknownMapMode) {
+  EpisodeConfig config;
+  config.episode.map_mode = "sliding";
+  try {
+    config.validate();
+    FAIL() << "map_mode sliding was accepted";
+  } catch (const OptionError& e) {
+    EXPECT_NE(std::string(e.what()).find("sliding"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace
