@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "roomscout/core/errors.hpp"
+#include "roomscout/explorer/explorer.hpp"
 #include "test_support.hpp"
 
 namespace roomscout::io {
@@ -165,6 +166,28 @@ TEST(ApplyConfigFile, SyntaxErrorsAndMissingFilesAreInputErrors) {
   const auto list = dir.write("list.yaml", "- laser\n");
   EXPECT_TRUE(Contains(test::messageOf<InputError>([&] { applyConfigFile(list, groups); }),
                        list.string() + ": expected a map of option groups (laser)"));
+}
+
+TEST(ApplyConfigFile, LoadsTheExplorersOptionsFromTheSameGroups) {
+  const TempDir dir;
+  ExplorerOptions options;
+  std::vector<ParameterGroup> groups = options.groups();
+  const auto file = dir.write("robot.yaml",
+                              "costmap:\n  inflation_margin_m: 0.08\nplanner:\n  allow_unknown: false\n"
+                              "episode:\n  no_progress_timeout_s: 30\nfollower:\n  goal_tolerance_m: 0.3\n"
+                              "laser:\n  range_max_m: 8\nmaps:\n  period_s: 2\nsegmentation:\n  door_cut_max_width_m: 1.2\n");
+  applyConfigFile(file, groups);
+  EXPECT_DOUBLE_EQ(options.costmap.inflation_margin_m, 0.08);
+  EXPECT_FALSE(options.planner.allow_unknown);
+  EXPECT_DOUBLE_EQ(options.goals.no_progress_timeout_s, 30.0);
+  EXPECT_DOUBLE_EQ(options.goals.goal_tolerance_m, 0.3);
+  EXPECT_DOUBLE_EQ(options.goals.laser_range_m, 8.0);
+  EXPECT_DOUBLE_EQ(options.maps.period_s, 2.0);
+  EXPECT_DOUBLE_EQ(options.maps.segmentation.door_cut_max_width_m, 1.2);
+  EXPECT_NO_THROW(options.validate());
+  const auto bad = dir.write("bad.yaml", "episode:\n  stall_min_growth: 2\n");
+  applyConfigFile(bad, groups);
+  EXPECT_THROW(options.validate(), OptionError);
 }
 
 }  // namespace
