@@ -1,17 +1,14 @@
 #pragma once
-// Maps built alongside the occupancy grid during an episode (topological, semantic, point
-// cloud). The runner shows every observer each simulation step; an observer decides when to
-// update (its own period), times its updates, and keeps its map for the caller to write.
+// Maps built from the simulated sensors alongside the occupancy grid during an episode (the
+// point cloud; the rooms and skeleton graph are the Explorer's). The runner shows every
+// observer each simulation step; an observer decides when to update (its own period), times
+// its updates, and keeps its map for the caller to write.
 
 #include <string_view>
 #include <vector>
 
 #include "roomscout/core/geometry.hpp"
 #include "roomscout/core/occupancy_grid.hpp"
-
-namespace roomscout {
-class SemanticMap;
-}
 
 namespace roomscout::sim {
 
@@ -27,7 +24,7 @@ struct EpisodeSnapshot {
 };
 
 /// A map builder attached to an episode. Call order: onStep() once per step (after mapping,
-/// before the strategy decides), then onFinish() once. Not thread-safe.
+/// before the Explorer decides), then onFinish() once. Not thread-safe.
 class EpisodeObserver {
  public:
   virtual ~EpisodeObserver() = default;
@@ -38,8 +35,6 @@ class EpisodeObserver {
   virtual void onFinish(const EpisodeSnapshot& snapshot) = 0;
   /// Wall-clock durations of its updates so far [ms].
   virtual const std::vector<double>& updateTimes_ms() const = 0;
-  /// The room map that semantic-aware strategies read, when this observer builds one.
-  virtual const SemanticMap* semanticMap() const { return nullptr; }
 };
 
 }  // namespace roomscout::sim
