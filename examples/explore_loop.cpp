@@ -68,8 +68,10 @@ int main(int argc, char** argv) {
 
     const ExplorerCommand command = explorer.update({map, robot, t});
     if (command.kind == ExplorerCommand::Kind::kDone) {
-      std::printf("%6.1f s  done: %zu known cells, %d goals\n", t, map.states().size(),
-                  explorer.stats().goals);
+      const auto known_cells = std::count_if(map.states().begin(), map.states().end(),
+                                             [](CellState c) { return c != CellState::kUnknown; });
+      std::printf("%6.1f s  done: %.1f m^2 known, %d goals\n", t,
+                  known_cells * map.geometry().resolution_m() * map.geometry().resolution_m(), explorer.stats().goals);
       return 0;
     }
     if (command.kind != ExplorerCommand::Kind::kDrive) continue;
