@@ -8,10 +8,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <set>
 
 #include "../maps/synthetic_maps.hpp"
 #include "roomscout/core/grid_remap.hpp"
+#include "roomscout/exploration/improved_rrt.hpp"
+#include "roomscout/exploration/rrt_exploration.hpp"
 #include "roomscout/exploration/rrt_tree.hpp"
 #include "roomscout/exploration/semantic_explorer.hpp"
 #include "roomscout/exploration/strategy_registry.hpp"
@@ -410,6 +413,59 @@ TEST(SemanticExplorerOnGrowingMap, DropsWhatACroppedGridLosesAndExploresWhatAGro
   std::size_t east_nodes = 0;
   for (std::size_t i = 0; i < s.tree()->size(); ++i) east_nodes += east(s.tree()->node(i));
   EXPECT_GT(east_nodes, 10u);
+}
+
+// rrt's detectors sample over the grid they were first given; improved_rrt's over the known
+// box. On a grid cut short their trees keep only the nodes on it, and on a grid grown past the
+// first one they grow into the new part.
+template <class Strategy>
+void treesFollowTheGrid(Strategy& s, const std::function<std::vector<const RrtTree*>()>& trees) {
+  GrowingMap map;
+  const Pose2 west{2.7, 6.0, 0.0};
+  map.reveal(west.position(), 3.0);
+  Costmap costmap;
+  const auto decideOn = [&](const OccupancyGrid& grid, const Pose2& robot, double t) {
+    costmap.update(grid);
+    const Decision d = s.decide({grid, costmap, robot, t});
+    if (d.status == Decision::Status::kGoal) {
+      EXPECT_FALSE(costmap.isLethal(grid.geometry().cellOf(d.goal_m))) << "t " << t;
+      s.onGoalReached(d.goal_m);
+    }
+  };
+  const auto nodesOff = [&](const GridGeometry& g) {
+    std::size_t n = 0;
+    for (const RrtTree* tree : trees()) n += nodesOutside(*tree, g);
+    return n;
+  };
+  const OccupancyGrid a = map.grid(10);
+  decideOn(a, west, 0.0);
+  decideOn(a, west, 20.0);
+  const GridGeometry& ga = a.geometry();
+  const int cut = static_cast<int>(std::lround(2.0 / kRes));
+  const OccupancyGrid b = a.reframed(
+      GridGeometry(ga.origin_m() + Vec2(0.0, cut * kRes), kRes, ga.width(), ga.height() - cut));
+  ASSERT_GT(nodesOff(b.geometry()), 0u) << "the crop must cut off some nodes";
+  decideOn(b, west, 21.0);
+  EXPECT_EQ(nodesOff(b.geometry()), 0u);
+  for (const RrtTree* tree : trees()) EXPECT_FALSE(tree->empty());
+
+  for (const Vec2& p : {Vec2(2.6, 3.5), Vec2(2.6, 1.2), Vec2(5.0, 1.2), Vec2(8.2, 1.2)}) map.reveal(p, 2.5);
+  const OccupancyGrid c = map.grid(20);
+  const Pose2 corridor{8.2, 1.2, 0.0};
+  for (int k = 0; k < 10; ++k) decideOn(c, corridor, 22.0 + 2.0 * k);
+  EXPECT_EQ(nodesOff(c.geometry()), 0u);
+  std::size_t east = 0;
+  for (const RrtTree* tree : trees()) {
+    for (std::size_t i = 0; i < tree->size(); ++i) east += tree->node(i).x() > farCorner(ga).x();
+  }
+  EXPECT_GT(east, 10u);
+}
+
+TEST(RrtOnGrowingMap, TreesKeepToTheGridAndGrowIntoItsNewPart) {
+  RrtExploration rrt(4);
+  treesFollowTheGrid(rrt, [&] { return std::vector<const RrtTree*>{rrt.globalTree(), rrt.localTree()}; });
+  ImprovedRrt improved(4);
+  treesFollowTheGrid(improved, [&] { return std::vector<const RrtTree*>{improved.tree()}; });
 }
 
 }  // namespace
