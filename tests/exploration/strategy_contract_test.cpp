@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
+
 #include "../sim/test_worlds.hpp"
 #include "roomscout/exploration/rrt_tree.hpp"
 #include "roomscout/exploration/strategy_registry.hpp"
@@ -175,6 +177,71 @@ TEST(RrtTree, ExtendSteersAndAddsFreeEdgesOnly) {
   EXPECT_FALSE(b.added);
   EXPECT_EQ(tree.size(), 2u);
   EXPECT_EQ(tree.parent(1), 0u);
+}
+
+// A tree re-indexed for a new box keeps its nodes in order (or drops those rejected, hanging
+// their children from the nearest kept ancestor) and finds nearest nodes as before.
+TEST(RrtTreeRebound, KeepsOrderAndParentsAndFindsNearestNodesInTheNewBox) {
+  RrtTree tree(0.5, {0, 0}, {10, 5}, 0.5);
+  std::mt19937_64 rng(9);
+  tree.reset({1, 1});
+  const auto sampler = uniformBoxSampler({0, 0}, {10, 5});
+  for (int i = 0; i < 1500; ++i) tree.add(sampler(rng), tree.nearest(sampler(rng)));
+  std::vector<Vec2> nodes;
+  std::vector<std::size_t> parents;
+  for (std::size_t i = 0; i < tree.size(); ++i) {
+    nodes.push_back(tree.node(i));
+    parents.push_back(tree.parent(i));
+  }
+  // Grown: every node kept, same order and parents.
+  EXPECT_EQ(tree.rebound({-6, -3}, {20, 12}, [](const Vec2&) { return true; }), nodes.size());
+  ASSERT_EQ(tree.size(), nodes.size());
+  for (std::size_t i = 0; i < nodes.size(); ++i) {
+    EXPECT_EQ(tree.node(i), nodes[i]);
+    EXPECT_EQ(tree.parent(i), parents[i]);
+  }
+  const auto query = uniformBoxSampler({-8, -5}, {22, 14});
+  auto bruteNearest = [&](const Vec2& p) {
+    std::size_t best = 0;
+    for (std::size_t i = 1; i < tree.size(); ++i) {
+      if ((tree.node(i) - p).squaredNorm() < (tree.node(best) - p).squaredNorm()) best = i;
+    }
+    return best;
+  };
+  for (int q = 0; q < 300; ++q) {
+    const Vec2 p = query(rng);
+    EXPECT_EQ(tree.nearest(p), bruteNearest(p));
+  }
+  // Cropped to x >= 3: the nodes west of it go; each kept node's parent is its nearest kept
+  // ancestor, or itself when it had none.
+  const auto keep = [](const Vec2& p) { return p.x() >= 3.0; };
+  std::vector<std::size_t> new_index(nodes.size(), SIZE_MAX);
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < nodes.size(); ++i) {
+    if (keep(nodes[i])) new_index[i] = kept++;
+  }
+  ASSERT_GT(kept, 0u);
+  ASSERT_LT(kept, nodes.size());
+  EXPECT_EQ(tree.rebound({3, 0}, {10, 5}, keep), kept);
+  ASSERT_EQ(tree.size(), kept);
+  for (std::size_t i = 0; i < nodes.size(); ++i) {
+    if (new_index[i] == SIZE_MAX) continue;
+    EXPECT_EQ(tree.node(new_index[i]), nodes[i]);
+    std::size_t a = i;
+    while (a != parents[a] && new_index[parents[a]] == SIZE_MAX) a = parents[a];
+    const std::size_t expected = a == parents[a] || new_index[parents[a]] == SIZE_MAX ? new_index[i]
+                                                                                       : new_index[parents[a]];
+    EXPECT_EQ(tree.parent(new_index[i]), expected) << "node " << i;
+  }
+  for (int q = 0; q < 300; ++q) {
+    const Vec2 p = query(rng);
+    EXPECT_EQ(tree.nearest(p), bruteNearest(p));
+  }
+  // Nothing kept: an empty tree, ready for reset().
+  EXPECT_EQ(tree.rebound({0, 0}, {1, 1}, [](const Vec2&) { return false; }), 0u);
+  EXPECT_TRUE(tree.empty());
+  tree.reset({0.5, 0.5});
+  EXPECT_EQ(tree.size(), 1u);
 }
 
 }  // namespace

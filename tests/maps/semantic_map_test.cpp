@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <set>
 
 #include "roomscout/core/errors.hpp"
@@ -74,6 +76,73 @@ TEST(SemanticMap, IdsStableAcrossGrowingPartialMaps) {
   EXPECT_EQ(ids.size(), probes.size());
   for (const SemanticRegion& r : map.regions()) EXPECT_FALSE(r.open);
   EXPECT_EQ(map.updateCount(), 6);
+}
+
+/// The cells of `plan` (origin (0, 0)) seen through a grid of `w` x `h` cells whose cell (0, 0)
+/// is the plan's cell (ox, oy); cells off the plan are unknown.
+cv::Mat frameOf(const cv::Mat& plan, int ox, int oy, int w, int h) {
+  cv::Mat out(h, w, CV_8U, cv::Scalar(test::v(U)));
+  const cv::Rect inside = cv::Rect(ox, oy, w, h) & cv::Rect(0, 0, plan.cols, plan.rows);
+  plan(inside).copyTo(out(inside - cv::Point(ox, oy)));
+  return out;
+}
+
+// A SLAM map grows on every side and its origin moves as it grows: rooms are matched by where
+// they are in the map frame, not by cell index. The second frame moves the origin by the rooms'
+// pitch (5.35 m), so that matching by index would give the west room the middle room's id.
+TEST(SemanticMap, IdsAndColoursStableWhenTheGridGrowsAndItsOriginMoves) {
+  const cv::Mat full = test::threeRoomsAndCorridor();
+  cv::Mat seen = full.clone();
+  box(seen, 11.0, 0, 16.4, 10.4, U);  // the east room not seen yet
+  const std::vector<Vec2> probes = {{2.5, 6}, {8.2, 6}, {3, 1.2}};
+  struct Frame {
+    int ox, oy, w, h;  // cells of the plan
+  };
+  // The first map covers the known part with a small margin; each next one grows on every side,
+  // its origin moving left and down (beyond the plan: a SLAM map is not bounded by the building).
+  const int pitch = static_cast<int>(std::lround(5.35 / test::kRes));
+  const Frame frames[] = {{-4, -4, 228, 216}, {-4 - pitch, -10, 228 + pitch + 20, 230}, {-30, -40, 400, 300}};
+  SemanticMap map;
+  std::vector<int> ids;
+  std::vector<std::array<std::uint8_t, 3>> colours;
+  std::vector<Vec2> centroids;
+  for (std::size_t k = 0; k < std::size(frames); ++k) {
+    const Frame& f = frames[k];
+    if (k == 2) seen = full;  // the last map has the east room too
+    const cv::Mat states = frameOf(seen, f.ox, f.oy, f.w, f.h);
+    const GridGeometry g(Vec2(f.ox * test::kRes, f.oy * test::kRes), test::kRes, f.w, f.h);
+    map.update(g, RoomSegmenter().segment(states, test::kRes).labels, states);
+    ASSERT_EQ(map.geometry(), g);
+    for (std::size_t i = 0; i < probes.size(); ++i) {
+      const int id = map.roomAt(probes[i]);
+      ASSERT_NE(id, 0) << "probe " << i << " frame " << k;
+      const SemanticRegion* region = map.region(id);
+      ASSERT_NE(region, nullptr);
+      if (k == 0) {
+        ids.push_back(id);
+        colours.push_back(region->rgb);
+        centroids.push_back(region->centroid_m);
+        continue;
+      }
+      EXPECT_EQ(id, ids[i]) << "probe " << i << " changed id in frame " << k;
+      EXPECT_EQ(region->rgb, colours[i]) << "probe " << i << " changed colour in frame " << k;
+      // The rooms seen whole from the start stay where they were in the map frame.
+      if (i < 2) {
+        EXPECT_LT((region->centroid_m - centroids[i]).norm(), 0.05) << "probe " << i << " frame " << k;
+      }
+    }
+  }
+  EXPECT_EQ(std::set<int>(ids.begin(), ids.end()).size(), probes.size());
+  // The east room, seen last, got an id of its own.
+  const int east = map.roomAt(Vec2(13.5, 6));
+  EXPECT_NE(east, 0);
+  EXPECT_EQ(std::count(ids.begin(), ids.end(), east), 0);
+  // Matching by cell index would have been wrong here: in the second frame the middle room
+  // lies on the cells the west room had in the first.
+  const GridGeometry g0(Vec2(-4 * test::kRes, -4 * test::kRes), test::kRes, 228, 216);
+  const GridGeometry g1(Vec2((-4 - pitch) * test::kRes, -10 * test::kRes), test::kRes, 228 + pitch + 20, 230);
+  const Cell west_in_g0 = g0.cellOf(probes[0]);
+  EXPECT_GT(std::abs(g1.centerOf(west_in_g0).x() - probes[0].x()), 5.0);
 }
 
 TEST(SemanticMap, ACopyKeepsItsRoomsWhenTheOriginalIsUpdated) {

@@ -196,6 +196,57 @@ TEST(CostmapTest, IncrementalUpdatesEqualABuildFromScratch) {
   }
 }
 
+// A SLAM map grows on every side and its origin moves as it grows (and may keep its size while
+// it moves): an update on another geometry equals a build from scratch on it, even when the
+// caller passes the rectangle of its last changes, which means nothing on a new geometry.
+TEST(CostmapTest, AnUpdateOnAnotherGeometryEqualsABuildFromScratch) {
+  OccupancyGrid grid = makeGrid(80, 60, CellState::kUnknown);
+  const GridGeometry& g0 = grid.geometry();
+  for (int y = 10; y < 50; ++y) {
+    for (int x = 10; x < 70; ++x) grid.setState(g0.index(Cell{x, y}), CellState::kFree);
+  }
+  for (int x = 10; x < 70; ++x) grid.setState(g0.index(Cell{x, 30}), CellState::kOccupied);
+  for (int y = 10; y < 50; ++y) grid.setState(g0.index(Cell{40, y}), CellState::kOccupied);
+  const double r = kResolution_m;
+  auto moved = [&](int dx, int dy, int dw, int dh) {
+    return GridGeometry(g0.origin_m() + Vec2(dx * r, dy * r), r, g0.width() + dw, g0.height() + dh);
+  };
+  const GridGeometry frames[] = {
+      moved(-7, -3, 19, 11),  // grown on every side
+      moved(5, -4, 0, 0),     // moved without changing size (same cell count)
+      moved(-12, 6, 30, -8),  // grown left and right, cropped below and above
+      moved(9, 9, -20, -20),  // cropped on every side
+  };
+  for (const bool hinted : {false, true}) {
+    Costmap costmap;
+    costmap.update(grid);
+    for (const GridGeometry& frame : frames) {
+      const OccupancyGrid next = grid.reframed(frame);
+      if (hinted) {
+        costmap.update(next, CellRect{20, 20, 22, 22});
+      } else {
+        costmap.update(next);
+      }
+      Costmap fresh;
+      fresh.update(next);
+      ASSERT_EQ(costmap.geometry(), next.geometry());
+      ASSERT_EQ(costmap.lethalMask().size(), next.geometry().cellCount());
+      std::size_t lethal = 0;
+      for (std::size_t i = 0; i < next.geometry().cellCount(); ++i) {
+        ASSERT_EQ(costmap.isLethal(i), fresh.isLethal(i)) << "cell " << i;
+        ASSERT_EQ(costmap.isUnknown(i), fresh.isUnknown(i)) << "cell " << i;
+        ASSERT_EQ(costmap.clearance_m(i), fresh.clearance_m(i)) << "cell " << i;
+        ASSERT_EQ(costmap.stepCost(i), fresh.stepCost(i)) << "cell " << i;
+        lethal += costmap.isLethal(i);
+      }
+      EXPECT_GT(lethal, 0u);  // the walls came along
+      // The walls stay where they are in the map frame.
+      const Vec2 wall_m = g0.centerOf(Cell{40, 20});
+      EXPECT_TRUE(costmap.isLethal(next.geometry().cellOf(wall_m)));
+    }
+  }
+}
+
 TEST(CostmapTest, OptionsAreValidated) {
   const auto throws = [](auto mutate) {
     CostmapOptions options;

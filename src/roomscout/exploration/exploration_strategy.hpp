@@ -15,6 +15,9 @@ class SemanticMap;
 
 /// What a strategy sees when it decides: the current map, its costmap (updated from that map
 /// just before the call), the robot pose and the clock. Never ground truth.
+/// The map's geometry may differ from one call to the next, as a SLAM map's does when it grows
+/// and its origin moves (normally by whole cells, the resolution kept): a strategy keeps what
+/// it remembers in the map frame and never indexes one grid's cells with another's.
 struct ExplorationInput {
   const OccupancyGrid& grid;
   const Costmap& costmap;

@@ -323,8 +323,24 @@ void ImprovedRrt::select(const ExplorationInput& input) {
   goal_active_ = true;
 }
 
+void ImprovedRrt::followGeometry(const ExplorationInput& input, const GridGeometry& previous) {
+  const GridGeometry& g = input.grid.geometry();
+  if (tree_ && tree_->rebound(g.origin_m(), farCorner(g), [&g](const Vec2& p) { return g.contains(p); }) == 0) {
+    tree_->reset(input.robot.position());
+  }
+  // Cells and indices are the old grid's: recomputed from the points; gains too.
+  for (Point& f : frontiers_) f = makePoint(g, f.p, f.copies);
+  if (has_previous_) previous_goal_ = makePoint(g, previous_goal_.p, previous_goal_.copies);
+  eraseFrontiers([](const Point& f) { return f.index < 0; });
+  gain_table_ = std::make_unique<GainTable>();
+  table_call_ = 0;
+  visited_ = remapCells(visited_, previous, g);
+  if (looking_ && !g.contains(look_cell_m_)) looking_ = false;
+}
+
 Decision ImprovedRrt::decide(const ExplorationInput& input) {
   ++call_;
+  if (const auto previous = geometry_.update(input.grid.geometry())) followGeometry(input, *previous);
   const Vec2 robot = input.robot.position();
   if (!tree_) {
     const GridGeometry& g = input.grid.geometry();
@@ -373,7 +389,7 @@ std::optional<Vec2> ImprovedRrt::lookGoal(const ExplorationInput& input) {
   if (idle_since_s_ < 0.0) idle_since_s_ = input.time_s;
   if (input.time_s - idle_since_s_ < options_.look_after_idle_s - 1e-9) return std::nullopt;
   const GridGeometry& g = input.grid.geometry();
-  if (looking_ && visited_[g.index(g.cellOf(look_cell_m_))] == 0) return look_goal_m_;
+  if (looking_ && g.contains(look_cell_m_) && visited_[g.index(g.cellOf(look_cell_m_))] == 0) return look_goal_m_;
   looking_ = false;
   const Vec2 robot = input.robot.position();
   const std::vector<Cell> cells =

@@ -51,7 +51,12 @@
 //   HouseExpo plans ran until the time limit at 99.99-100 %, now none (on large_office and in
 //   3 of 10 medium_house seeds the detector still holds points at the limit);
 // - after reaching its goal the robot waits in place (a goal at the nearest non-lethal cell)
-//   until the next selection, as the original idles.
+//   until the next selection, as the original idles;
+// - a grid whose geometry differs from the last call's (a SLAM map that grew, its origin
+//   moving): the tree is re-indexed for the new grid, keeping its nodes on it (a tree left
+//   with none restarts at the robot); frontier points and the previous goal get their cells on
+//   the new grid (points off it are dropped, cached gains recomputed); the cells marked for the
+//   end test move with the map; a look goal whose cell left the grid is given up.
 
 #include <cstdint>
 #include <memory>
@@ -59,6 +64,7 @@
 #include <random>
 #include <vector>
 
+#include "roomscout/core/grid_remap.hpp"
 #include "roomscout/exploration/exploration_strategy.hpp"
 #include "roomscout/exploration/rrt_tree.hpp"
 
@@ -118,6 +124,8 @@ class ImprovedRrt final : public ExplorationStrategy {
   std::size_t frontierCount() const { return static_cast<std::size_t>(held_); }
   /// Distinct frontier points currently held.
   std::size_t distinctFrontierCount() const { return frontiers_.size(); }
+  /// The tree (null before the first decide()).
+  const RrtTree* tree() const { return tree_.get(); }
 
  private:
   struct Point {
@@ -132,6 +140,8 @@ class ImprovedRrt final : public ExplorationStrategy {
   };
   /// A point with its cells computed once (from p, as the original computes them each time).
   static Point makePoint(const GridGeometry& g, const Vec2& p, long copies);
+  /// Carries the tree, points and marks over to a grid of another geometry (see the header).
+  void followGeometry(const ExplorationInput& input, const GridGeometry& previous);
   enum class Step { kContinue, kDone };
   Step iterate(const ExplorationInput& input, const RrtTree::Sampler& sampler);
   void select(const ExplorationInput& input);
@@ -147,6 +157,7 @@ class ImprovedRrt final : public ExplorationStrategy {
   ImprovedRrtOptions options_;
   std::mt19937_64 rng_;
   std::unique_ptr<RrtTree> tree_;
+  GeometryWatch geometry_;  ///< the grid geometry of the last call
   double done_until_s_ = 0.0;
   std::uint64_t call_ = 0;
   long iterations_since_selection_ = 0;

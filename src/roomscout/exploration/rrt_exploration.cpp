@@ -160,6 +160,21 @@ void RrtExploration::onGoalFailed(const Vec2& goal_m) {
   has_goal_ = false;
 }
 
+void RrtExploration::followGeometry(const ExplorationInput& input, const GridGeometry& previous) {
+  const GridGeometry& g = input.grid.geometry();
+  const auto onGrid = [&g](const Vec2& p) { return g.contains(p); };
+  if (global_) {
+    const Vec2 max_m = farCorner(g);
+    for (RrtTree* tree : {global_.get(), local_.get()}) {
+      if (tree->rebound(g.origin_m(), max_m, onGrid) == 0) tree->reset(input.robot.position());
+    }
+    sampler_ = uniformBoxSampler(g.origin_m(), max_m);
+  }
+  visited_ = remapCells(visited_, previous, g);
+  std::erase_if(detected_, [&](const Vec2& p) { return !onGrid(p); });
+  std::erase_if(centroids_, [&](const Vec2& p) { return !onGrid(p); });
+}
+
 void RrtExploration::grow(const ExplorationInput& input) {
   const Vec2 robot = input.robot.position();
   const GridGeometry& g = input.grid.geometry();
@@ -209,6 +224,7 @@ void RrtExploration::filter(const ExplorationInput& input) {
 }
 
 Decision RrtExploration::decide(const ExplorationInput& input) {
+  if (const auto previous = geometry_.update(input.grid.geometry())) followGeometry(input, *previous);
   grow(input);
   filter(input);
   markDisc(visited_, input.grid.geometry(), input.robot.position(), options_.observed_radius_m);

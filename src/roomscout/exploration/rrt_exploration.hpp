@@ -48,13 +48,19 @@
 //   its own goal, which the busy branch above overrides while it drives there, and the
 //   blacklist stands in for it once the goal is reached or failed;
 // - with no centroid and no goal left, the robot waits where it is (a goal at the nearest
-//   non-lethal cell) while the trees grow.
+//   non-lethal cell) while the trees grow;
+// - a grid whose geometry differs from the last call's (a SLAM map that grew, its origin
+//   moving): both trees are re-indexed for the new grid and sample over it, keeping their
+//   nodes on it (a tree left with none restarts at the robot); the cells marked for the end
+//   test move with the map; frontier points and centroids off the grid are dropped. The
+//   original's detectors read the map's bounds on each iteration.
 
 #include <cstdint>
 #include <memory>
 #include <random>
 #include <vector>
 
+#include "roomscout/core/grid_remap.hpp"
 #include "roomscout/exploration/exploration_strategy.hpp"
 #include "roomscout/exploration/rrt_tree.hpp"
 
@@ -109,8 +115,13 @@ class RrtExploration final : public ExplorationStrategy {
   const std::vector<Vec2>& centroids() const { return centroids_; }
   /// Nodes of the global tree (0 before the first decide()).
   std::size_t globalTreeSize() const { return global_ ? global_->size() : 0; }
+  /// The trees (null before the first decide()).
+  const RrtTree* globalTree() const { return global_.get(); }
+  const RrtTree* localTree() const { return local_.get(); }
 
  private:
+  /// Carries the trees, marks and points over to a grid of another geometry (see the header).
+  void followGeometry(const ExplorationInput& input, const GridGeometry& previous);
   void grow(const ExplorationInput& input);
   void filter(const ExplorationInput& input);
   bool blacklisted(const Vec2& p) const;
@@ -118,6 +129,7 @@ class RrtExploration final : public ExplorationStrategy {
   RrtExplorationOptions options_;
   std::mt19937_64 rng_;
   std::unique_ptr<RrtTree> global_, local_;
+  GeometryWatch geometry_;  ///< the grid geometry of the last call
   RrtTree::Sampler sampler_;
   double grown_until_s_ = 0.0;
   double last_end_check_s_ = 0.0;

@@ -41,10 +41,44 @@ EdgeCheck checkEdge(const OccupancyGrid& grid, const Vec2& from_m, const Vec2& t
 RrtTree::RrtTree(double eta_m, const Vec2& min_m, const Vec2& max_m, double bucket_m)
     : eta_m_(eta_m), min_m_(min_m), bucket_m_(bucket_m) {
   if (!(eta_m > 0.0) || !(bucket_m > 0.0)) throw InvalidArgument("RrtTree: eta_m and bucket_m must be > 0");
+  layBuckets(min_m, max_m);
+}
+
+void RrtTree::layBuckets(const Vec2& min_m, const Vec2& max_m) {
   if (!(max_m.x() >= min_m.x() && max_m.y() >= min_m.y())) throw InvalidArgument("RrtTree: empty box");
-  buckets_x_ = std::max(1, static_cast<int>(std::ceil((max_m.x() - min_m.x()) / bucket_m)));
-  buckets_y_ = std::max(1, static_cast<int>(std::ceil((max_m.y() - min_m.y()) / bucket_m)));
-  buckets_.resize(static_cast<std::size_t>(buckets_x_) * buckets_y_);
+  min_m_ = min_m;
+  buckets_x_ = std::max(1, static_cast<int>(std::ceil((max_m.x() - min_m.x()) / bucket_m_)));
+  buckets_y_ = std::max(1, static_cast<int>(std::ceil((max_m.y() - min_m.y()) / bucket_m_)));
+  buckets_.assign(static_cast<std::size_t>(buckets_x_) * buckets_y_, {});
+  used_min_x_ = used_min_y_ = 0;
+  used_max_x_ = used_max_y_ = -1;
+}
+
+std::size_t RrtTree::rebound(const Vec2& min_m, const Vec2& max_m, const std::function<bool(const Vec2&)>& keep) {
+  constexpr std::size_t kDropped = std::numeric_limits<std::size_t>::max();
+  std::vector<std::size_t> new_index(nodes_.size(), kDropped);
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < nodes_.size(); ++i) {
+    if (keep(nodes_[i])) new_index[i] = kept++;
+  }
+  std::vector<Vec2> nodes;
+  std::vector<std::size_t> parents;
+  nodes.reserve(kept);
+  parents.reserve(kept);
+  for (std::size_t i = 0; i < nodes_.size(); ++i) {
+    if (new_index[i] == kDropped) continue;
+    std::size_t a = i;  // up to the nearest kept ancestor, or a root
+    while (parents_[a] != a && new_index[parents_[a]] == kDropped) a = parents_[a];
+    const bool orphan = parents_[a] == a;
+    nodes.push_back(nodes_[i]);
+    parents.push_back(orphan ? new_index[i] : new_index[parents_[a]]);
+  }
+  layBuckets(min_m, max_m);
+  nodes_.clear();
+  parents_.clear();
+  for (std::size_t i = 0; i < nodes.size(); ++i) add(nodes[i], parents[i]);
+  parents_ = std::move(parents);  // add() makes node 0 a root; a kept node 0 may have a parent
+  return kept;
 }
 
 int RrtTree::bucketX(double x_m) const {

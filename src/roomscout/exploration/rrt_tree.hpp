@@ -82,7 +82,16 @@ class RrtTree {
   /// Appends a node without checks (used by tests and by callers that know the edge is free).
   std::size_t add(const Vec2& p_m, std::size_t parent);
 
+  /// Re-indexes the tree for the box [min_m, max_m] (the grid grew or moved, as a SLAM map
+  /// does) and keeps only the nodes `keep` accepts (e.g. those still on the grid), in their
+  /// order. A kept node whose parent was dropped hangs from its nearest kept ancestor, or is a
+  /// root (its own parent) when it has none. Returns the number of nodes kept; with none the
+  /// tree is empty and must be reset() before it grows again.
+  std::size_t rebound(const Vec2& min_m, const Vec2& max_m, const std::function<bool(const Vec2&)>& keep);
+
  private:
+  /// Sizes an empty index for the box [min_m, max_m].
+  void layBuckets(const Vec2& min_m, const Vec2& max_m);
   int bucketX(double x_m) const;
   int bucketY(double y_m) const;
 

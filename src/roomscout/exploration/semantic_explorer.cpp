@@ -225,11 +225,11 @@ std::optional<Vec2> SemanticExplorer::endPhaseCell(const ExplorationInput& input
   const GridGeometry& g = input.grid.geometry();
   for (const Vec2& f : end_cells_done_) markDisc(visited_, g, f, options_.observed_radius_m);
   end_cells_done_.clear();
-  if (end_cell_) {
+  if (end_cell_ && g.contains(*end_cell_)) {
     const std::size_t i = g.index(g.cellOf(*end_cell_));
     if (input.grid.isUnknown(i) && !visited_[i] && !input.costmap.isLethal(i)) return end_cell_;
-    end_cell_.reset();
   }
+  end_cell_.reset();
   const Vec2 robot = input.robot.position();
   const std::vector<Cell> cells =
       reachableFrontierCells(input.grid, input.costmap, 4, &visited_, &robot);
@@ -617,9 +617,23 @@ bool SemanticExplorer::endTest(const ExplorationInput& input) {
   return false;
 }
 
+void SemanticExplorer::followGeometry(const ExplorationInput& input, const GridGeometry& previous) {
+  const GridGeometry& g = input.grid.geometry();
+  const auto onGrid = [&g](const Vec2& p) { return g.contains(p); };
+  if (tree_ && tree_->rebound(g.origin_m(), farCorner(g), onGrid) == 0) tree_->reset(input.robot.position());
+  std::erase_if(points_, [&](const FrontierPoint& f) { return !onGrid(f.p); });
+  // A point's mark is where it lies (one point per marked cell), so the marks are laid anew from
+  // the points; with another resolution two points may now share a cell.
+  point_cells_.assign(g.cellCount(), 0);
+  for (const FrontierPoint& f : points_) point_cells_[g.index(g.cellOf(f.p))] = 1;
+  visited_ = remapCells(visited_, previous, g);
+  if (end_cell_ && !onGrid(*end_cell_)) end_cell_.reset();
+}
+
 Decision SemanticExplorer::decide(const ExplorationInput& input) {
   const GridGeometry& g = input.grid.geometry();
   const Vec2 robot = input.robot.position();
+  if (const auto previous = geometry_.update(g)) followGeometry(input, *previous);
   if (!tree_) {
     const Vec2 max_m = g.origin_m() + Vec2(g.width() * g.resolution_m(), g.height() * g.resolution_m());
     tree_ = std::make_unique<RrtTree>(options_.eta_m, g.origin_m(), max_m, 0.5);
@@ -670,7 +684,7 @@ Decision SemanticExplorer::decide(const ExplorationInput& input) {
   // Points seen since (no longer unknown) or inside the inflation are dropped.
   std::erase_if(points_, [&](const FrontierPoint& f) {
     if (!stale(input, f.p) && !blacklisted(f.p)) return false;
-    point_cells_[g.index(g.cellOf(f.p))] = 0;
+    if (const Cell c = g.cellOf(f.p); g.contains(c)) point_cells_[g.index(c)] = 0;
     return true;
   });
   if (endTest(input)) return Decision::done();

@@ -72,6 +72,12 @@
 // worlds (18).
 // Without a semantic map (ExplorationInput::semantic null) no point is in a room: sampling is
 // uniform and every point scores -A, i.e. the plain RRT score.
+// A grid whose geometry differs from the last call's (a SLAM map that grew, its origin moving):
+// the tree is re-indexed for the new grid, keeping its nodes on it (a tree left with none
+// restarts at the robot); frontier points off the grid are dropped and the others keep their
+// cell marks, laid on the new grid by map position, as are the cells the robot came near; an
+// end-phase cell off the grid is given up. Rooms are looked up by map position, so a semantic
+// map still on an older geometry serves until it is updated.
 
 #include <cstdint>
 #include <memory>
@@ -82,6 +88,7 @@
 
 #include <opencv2/core.hpp>
 
+#include "roomscout/core/grid_remap.hpp"
 #include "roomscout/core/visit_marks.hpp"
 #include "roomscout/exploration/exploration_strategy.hpp"
 #include "roomscout/exploration/rrt_tree.hpp"
@@ -182,6 +189,8 @@ class SemanticExplorer final : public ExplorationStrategy {
     Vec2 anchor;  ///< last known point of the edge before it [m]
   };
   const std::vector<FrontierPoint>& frontierPoints() const { return points_; }
+  /// The tree (null before the first decide()).
+  const RrtTree* tree() const { return tree_.get(); }
   /// The frontier cells P_sem is drawn from (as of the last decide()): the current room's and
   /// its leaves' (leaf_rooms), or in a hub those near the robot.
   const std::vector<Vec2>& semanticCandidates() const { return candidates_; }
@@ -209,6 +218,8 @@ class SemanticExplorer final : public ExplorationStrategy {
     cv::Mat mask_, sums_;
   };
 
+  /// Carries the tree, points and marks over to a grid of another geometry (see above).
+  void followGeometry(const ExplorationInput& input, const GridGeometry& previous);
   void updateRoom(const ExplorationInput& input);
   /// Whether a point whose room is `room` counts as in the current room: `room` is the current
   /// room or one of its leaves (leaf_rooms). False outside every room.
@@ -254,6 +265,7 @@ class SemanticExplorer final : public ExplorationStrategy {
   std::string name_;
   std::mt19937_64 rng_;
   std::unique_ptr<RrtTree> tree_;
+  GeometryWatch geometry_;  ///< the grid geometry of the last call
   double grown_until_s_ = 0.0;
   double last_end_check_s_ = -1e9;
   int failed_end_checks_ = 0;

@@ -469,6 +469,7 @@ bool TopoExploration::refreshAll(const OccupancyGrid& grid) {
 Decision TopoExploration::decide(const ExplorationInput& input) {
   const GridGeometry& g = input.grid.geometry();
   const Vec2 p = input.robot.position();
+  if (const auto previous = geometry_.update(g)) visited_ = remapCells(visited_, *previous, g);
   if (options_.observed_radius_m > 0.0) markDisc(visited_, g, p, options_.observed_radius_m);
   dropReached(p);
 

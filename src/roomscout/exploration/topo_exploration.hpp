@@ -73,7 +73,10 @@
 //   (the cluster member nearest its mean), exempt from the near-vertex rule: pockets behind
 //   furniture have their goal d + 6 m out in explored space, where the rule gives them up.
 //   Without it the robot stops at 95.7-96.4 % of the three built-in worlds (seed 1), with it at
-//   99.7-99.8 %.
+//   99.7-99.8 %;
+// - the map may grow and its origin move between calls (a SLAM map): vertices, directions and
+//   goals are kept in the map frame, and the cells marked along the robot's path move with the
+//   map.
 // No choice is random: the seed is unused.
 
 #include <cstdint>
@@ -81,6 +84,7 @@
 #include <utility>
 #include <vector>
 
+#include "roomscout/core/grid_remap.hpp"
 #include "roomscout/exploration/exploration_strategy.hpp"
 
 namespace roomscout {
@@ -191,6 +195,7 @@ class TopoExploration final : public ExplorationStrategy {
   Vec2 goal_anchor_m_ = Vec2::Zero();  ///< the anchor of the goal's direction
   // Final refresh bookkeeping.
   std::vector<std::uint8_t> visited_;  ///< cells within observed_radius_m of the robot's path
+  GeometryWatch geometry_;             ///< the grid geometry visited_ is laid on
   std::vector<Vec2> tried_anchors_;    ///< frontiers of goals that were reached, or that failed
                                        ///< when the goal was the frontier itself
 };
