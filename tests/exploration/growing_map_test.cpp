@@ -130,6 +130,28 @@ constexpr double kStep_m = 1.5;  ///< the robot drives at most this far between 
 /// grows on every side) and every seventh 3 (it shrinks on every side).
 int marginAt(int k) { return k % 7 == 6 ? 3 : (k % 5 == 4 ? 16 : 10); }
 
+/// What one leg of driving toward a goal came to.
+enum class Leg { kReached, kStopped, kDriving };
+
+/// Drives the robot along `path` up to kStep_m, stopping short of a truly occupied cell, each
+/// waypoint shifted by `off`, and reveals the map around where it ends.
+Leg driveLeg(GrowingMap& map, Pose2& robot, const std::vector<Vec2>& path, const Vec2& off = Vec2::Zero()) {
+  Vec2 at = robot.position();
+  double driven = 0.0;
+  std::size_t i = 0;
+  for (; i < path.size(); ++i) {
+    if (map.truth(path[i]) != CellState::kFree) break;
+    driven += (path[i] - at).norm();
+    at = path[i] + off;
+    if (driven >= kStep_m) break;
+  }
+  const bool moved = (at - robot.position()).norm() > 1e-9;
+  if (moved) robot = Pose2{at.x(), at.y(), std::atan2(at.y() - robot.y_m, at.x() - robot.x_m)};
+  map.reveal(robot.position(), kSight_m);
+  if (i + 1 >= path.size() && (path.empty() || map.truth(path.back()) == CellState::kFree)) return Leg::kReached;
+  return moved ? Leg::kDriving : Leg::kStopped;
+}
+
 /// Drives `strategy` through a growing map from the middle room until it ends or `max_steps`
 /// decisions (1 s apart) were taken. The robot follows an A* path through the costmap toward each
 /// goal, up to kStep_m per decision, and stops short of a truly occupied cell (the path may cross
@@ -184,22 +206,10 @@ GrowingRun runOnGrowingMap(ExplorationStrategy& strategy, int max_steps,
       strategy.onGoalFailed(d.goal_m);
       continue;
     }
-    const std::vector<Vec2>& path = plan.path.waypoints_m;
-    Vec2 at = robot.position();
-    double driven = 0.0;
-    std::size_t i = 0;
-    for (; i < path.size(); ++i) {
-      if (map.truth(path[i]) != CellState::kFree) break;
-      driven += (path[i] - at).norm();
-      at = path[i];
-      if (driven >= kStep_m) break;
-    }
-    const bool moved = (at - robot.position()).norm() > 1e-9;
-    if (moved) robot = Pose2{at.x(), at.y(), std::atan2(at.y() - robot.y_m, at.x() - robot.x_m)};
-    map.reveal(robot.position(), kSight_m);
-    if (i + 1 >= path.size() && (path.empty() || map.truth(path.back()) == CellState::kFree)) {
+    const Leg leg = driveLeg(map, robot, plan.path.waypoints_m);
+    if (leg == Leg::kReached) {
       strategy.onGoalReached(d.goal_m);
-    } else if (!moved) {
+    } else if (leg == Leg::kStopped) {
       strategy.onGoalFailed(d.goal_m);
     }
   }
@@ -286,23 +296,11 @@ int firstDifference(const std::string& name, int max_steps, int& decisions) {
       growing->onGoalFailed(db.goal_m);
       continue;
     }
-    const std::vector<Vec2>& path = plan.path.waypoints_m;
-    Vec2 at = robot.position();
-    double driven = 0.0;
-    std::size_t i = 0;
-    for (; i < path.size(); ++i) {
-      if (map.truth(path[i]) != CellState::kFree) break;
-      driven += (path[i] - at).norm();
-      at = path[i] + off;
-      if (driven >= kStep_m) break;
-    }
-    const bool moved = (at - robot.position()).norm() > 1e-9;
-    if (moved) robot = Pose2{at.x(), at.y(), std::atan2(at.y() - robot.y_m, at.x() - robot.x_m)};
-    map.reveal(robot.position(), kSight_m);
-    if (i + 1 >= path.size() && (path.empty() || map.truth(path.back()) == CellState::kFree)) {
+    const Leg leg = driveLeg(map, robot, plan.path.waypoints_m, off);
+    if (leg == Leg::kReached) {
       fixed->onGoalReached(da.goal_m);
       growing->onGoalReached(db.goal_m);
-    } else if (!moved) {
+    } else if (leg == Leg::kStopped) {
       fixed->onGoalFailed(da.goal_m);
       growing->onGoalFailed(db.goal_m);
     }

@@ -185,7 +185,7 @@ TEST(ApplyConfigFile, LoadsTheExplorersOptionsFromTheSameGroups) {
   EXPECT_DOUBLE_EQ(options.maps.period_s, 2.0);
   EXPECT_DOUBLE_EQ(options.maps.segmentation.door_cut_max_width_m, 1.2);
   EXPECT_NO_THROW(options.validate());
-  const auto bad = dir.write("bad.yaml", "episode:\n  stall_min_growth: 2\n");
+  const auto bad = dir.write("bad.yaml", "episode:\n  stall_min_new_area_m2: -1\n");
   applyConfigFile(bad, groups);
   EXPECT_THROW(options.validate(), OptionError);
 }

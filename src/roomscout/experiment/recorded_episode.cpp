@@ -34,8 +34,7 @@ RecordedEpisode runRecordedEpisode(const sim::WorldModel& model, EpisodeSetup& s
   // and what it leaves. Declared before the observer, which waits for its jobs when it goes.
   MapWorker cloud_worker(settings.background_maps);
   sim::PointCloudObserver cloud(model, setup.cloud, setup.seed ^ 0x5851F42D4C957F2Dull, &cloud_worker);
-  setup.config.resolve();
-  ExplorerOptions options = setup.config.explorer;
+  ExplorerOptions options = sim::explorerOptionsFor(model, setup.config);
   options.all_maps = true;
   options.background_maps = settings.background_maps;
   Explorer explorer(*setup.strategy, options);

@@ -59,8 +59,8 @@ void GoalWatchdogOptions::validate() const {
   if (!(std::isfinite(stall_timeout_s) && stall_timeout_s > 0.0) || !finiteNonNegative(stall_radius_m)) {
     throw OptionError("episode: stall_timeout_s must be > 0 and stall_radius_m >= 0");
   }
-  if (!(finiteNonNegative(stall_min_growth) && stall_min_growth < 1.0)) {
-    throw OptionError("episode.stall_min_growth must be in [0, 1)");
+  if (!finiteNonNegative(stall_min_new_area_m2)) {
+    throw OptionError("episode.stall_min_new_area_m2 must be a finite number >= 0");
   }
   if (!(std::isfinite(laser_range_m) && laser_range_m > 0.0)) {
     throw OptionError("laser.range_max_m must be a finite number > 0");
@@ -74,8 +74,8 @@ std::vector<ParameterRef> GoalWatchdogOptions::parameters() {
       {"recovery_time_s", &recovery_time_s, "duration of a back-off recovery [s]"},
       {"stall_timeout_s", &stall_timeout_s, "no new map and little motion this long fails the goal [s]"},
       {"stall_radius_m", &stall_radius_m, "motion radius under which the robot counts as stalled [m]"},
-      {"stall_min_growth", &stall_min_growth,
-       "growth of the known free area (fraction of it) under which a stall window counts"},
+      {"stall_min_new_area_m2", &stall_min_new_area_m2,
+       "new known free area under which a stall window counts [m^2]; simulator: 0 = 0.1 % of the reachable floor"},
       {"max_decisions_per_step", &max_decisions_per_step, "failed goals tried in a row before waiting"},
   };
 }
@@ -196,15 +196,15 @@ void Explorer::stallWatchdog(const OccupancyGrid& grid, const Vec2& robot, doubl
   }
   stall_window_excursion_m_ = std::max(stall_window_excursion_m_, (robot - stall_window_position_).norm());
   if (t - stall_window_start_s_ < options_.goals.stall_timeout_s) return;
-  const std::size_t free_now = freeCells(grid);
-  const double growth = static_cast<double>(free_now) - static_cast<double>(stall_window_free_cells_);
-  if (goal_ && growth < options_.goals.stall_min_growth * static_cast<double>(free_now) &&
+  const double cell_m2 = grid.geometry().resolution_m() * grid.geometry().resolution_m();
+  const double free_now_m2 = static_cast<double>(freeCells(grid)) * cell_m2;
+  if (goal_ && free_now_m2 - stall_window_free_m2_ < options_.goals.stall_min_new_area_m2 &&
       stall_window_excursion_m_ < options_.goals.stall_radius_m) {
     ++stats_.stalls;
     failGoal();
   }
   stall_window_start_s_ = t;
-  stall_window_free_cells_ = free_now;
+  stall_window_free_m2_ = free_now_m2;
   stall_window_position_ = robot;
   stall_window_excursion_m_ = 0.0;
 }

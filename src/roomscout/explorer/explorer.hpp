@@ -43,9 +43,9 @@ struct GoalWatchdogOptions {
   double stall_timeout_s = 60.0;        ///< window of the stall watchdog [s]
   double stall_radius_m = 4.0;          ///< a robot that stayed within this radius of where the
                                         ///< window began, while the known free area grew by
-                                        ///< less than stall_min_growth, is stalled [m]
-  double stall_min_growth = 0.001;      ///< growth of the known free area, as a fraction of it,
-                                        ///< under which a window counts as stalled
+                                        ///< less than stall_min_new_area_m2, is stalled [m]
+  double stall_min_new_area_m2 = 1.0;   ///< growth of the known free area in a window under
+                                        ///< which it counts as stalled (0: never) [m^2]
   int max_decisions_per_step = 8;       ///< failed goals tried in a row before waiting a second
   double laser_range_m = 3.5;           ///< the laser's maximum range: a new scan can only have
                                         ///< blocked the path this close to the robot [m]
@@ -192,7 +192,7 @@ class Explorer {
   // and the farthest the robot went from there.
   double next_watchdog_s_ = 0.0;
   double stall_window_start_s_ = 0.0;
-  std::size_t stall_window_free_cells_ = 0;
+  double stall_window_free_m2_ = 0.0;
   Vec2 stall_window_position_ = Vec2::Zero();
   double stall_window_excursion_m_ = 0.0;
   bool stall_window_started_ = false;

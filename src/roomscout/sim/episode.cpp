@@ -133,12 +133,23 @@ GridGeometry publishedGeometry(const GridGeometry& full, const CellRect& known, 
 
 }  // namespace
 
+ExplorerOptions explorerOptionsFor(const WorldModel& world, EpisodeConfig config) {
+  config.resolve();
+  ExplorerOptions options = config.explorer;
+  if (options.goals.stall_min_new_area_m2 == 0.0) {
+    const ExplorationTruth truth(world, mapGeometryFor(world, config.mapping.resolution_m),
+                                 options.costmap.lethalRadius_m());
+    options.goals.stall_min_new_area_m2 = 0.001 * truth.reachableArea_m2();
+  }
+  return options;
+}
+
 EpisodeResult runEpisode(const WorldModel& world, EpisodeConfig config, ExplorationStrategy& strategy,
                          std::uint64_t seed, const EpisodeProgress& progress,
                          const std::vector<EpisodeObserver*>& observers) {
   config.resolve();
   config.validate();
-  ExplorerOptions options = config.explorer;
+  ExplorerOptions options = explorerOptionsFor(world, config);
   options.all_maps = false;
   Explorer explorer(strategy, options);
   return runEpisode(world, config, explorer, seed, progress, observers);

@@ -56,7 +56,13 @@ struct EpisodeConfig {
   OccupancyGridOptions mapping;
   PathFollowerOptions follower;
   EpisodeOptions episode;
-  ExplorerOptions explorer;  ///< costmap, planner, watchdogs, rooms and skeleton graph
+  /// Costmap, planner, watchdogs, rooms and skeleton graph. Its stall threshold is 0 here:
+  /// explorerOptionsFor() makes it 0.1 % of the world's reachable floor unless a config sets it.
+  ExplorerOptions explorer = [] {
+    ExplorerOptions o;
+    o.goals.stall_min_new_area_m2 = 0.0;
+    return o;
+  }();
 
   /// Copies the robot's radius and limits, and the follower's and laser's options, into the
   /// groups that mirror them.
@@ -121,8 +127,12 @@ struct EpisodeResult {
 /// Progress report for a caller's display: simulated time, limit, current rate.
 using EpisodeProgress = std::function<void(double time_s, double max_time_s, double rate)>;
 
-/// Runs one episode with `explorer`, made from config.explorer after config.resolve() and used
-/// up (read its rooms and skeleton graph afterwards). The world model is shared read-only;
+/// config.explorer, resolved for `world`: a stall threshold of 0 becomes 0.1 % of the floor the
+/// robot can reach (a stall window is one in which the map gained less than that).
+ExplorerOptions explorerOptionsFor(const WorldModel& world, EpisodeConfig config);
+
+/// Runs one episode with `explorer`, made with explorerOptionsFor(world, config) and used up
+/// (read its rooms and skeleton graph afterwards). The world model is shared read-only;
 /// everything else is created here from `config` and `seed`, so the same inputs give the
 /// same result. `observers` build further maps (the point cloud) as the robot explores.
 EpisodeResult runEpisode(const WorldModel& world, EpisodeConfig config, Explorer& explorer, std::uint64_t seed,
