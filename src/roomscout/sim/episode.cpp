@@ -3,11 +3,9 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <limits>
 #include <unordered_set>
 
 #include "roomscout/core/errors.hpp"
-#include "roomscout/explorer/explorer.hpp"
 #include "roomscout/mapping/occupancy_mapper.hpp"
 #include "roomscout/sim/exploration_truth.hpp"
 
