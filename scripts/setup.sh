@@ -10,6 +10,10 @@ packages=(
   libeigen3-dev libopencv-dev libopencv-contrib-dev libpcl-dev
   libyaml-cpp-dev nlohmann-json3-dev libcli11-dev libtbb-dev
   libgtest-dev libgmock-dev libbenchmark-dev
+  # ROS 1, for the nodes in ros/ and their tests (label "ros")
+  libroscpp-dev libtf2-ros-dev libactionlib-dev libnav-msgs-dev libmove-base-msgs-dev
+  libvisualization-msgs-dev libsensor-msgs-dev libstd-srvs-dev python3-rosmaster catkin
+  python3-roslaunch python3-rostopic
 )
 # The browser tests open report pages in headless Chromium: a large package (about 120 MB
 # to download, 410 MB installed), so only when asked for.
@@ -32,5 +36,7 @@ fi
 
 build_dir="${1:-build}"
 jobs="$(nproc)"
-cmake -S . -B "$build_dir" -DCMAKE_BUILD_TYPE=Release -DROOMSCOUT_BUILD_TESTS=ON -DROOMSCOUT_BUILD_BENCHMARKS=ON
+# Debian's catkin runs its Python scripts at configure time: with Debian's python3, not the
+# first one on PATH.
+cmake -S . -B "$build_dir" -DPYTHON_EXECUTABLE=/usr/bin/python3 -DCMAKE_BUILD_TYPE=Release -DROOMSCOUT_BUILD_TESTS=ON -DROOMSCOUT_BUILD_BENCHMARKS=ON
 cmake --build "$build_dir" -j "$jobs"

@@ -13,7 +13,9 @@ namespace roomscout {
 struct Cell {
   int x = 0;
   int y = 0;
-  friend bool operator==(const Cell&, const Cell&) = default;
+  // Written out rather than defaulted: the ROS 1 nodes include this header as C++17.
+  friend bool operator==(const Cell& a, const Cell& b) { return a.x == b.x && a.y == b.y; }
+  friend bool operator!=(const Cell& a, const Cell& b) { return !(a == b); }
 };
 
 /// Axis-aligned rectangle of cells, [min, max) on both axes. Empty when min >= max.
@@ -60,7 +62,11 @@ class GridGeometry {
   }
   CellRect bounds() const { return {0, 0, width_, height_}; }
 
-  friend bool operator==(const GridGeometry&, const GridGeometry&) = default;
+  friend bool operator==(const GridGeometry& a, const GridGeometry& b) {
+    return a.origin_m_ == b.origin_m_ && a.resolution_m_ == b.resolution_m_ && a.width_ == b.width_ &&
+           a.height_ == b.height_;
+  }
+  friend bool operator!=(const GridGeometry& a, const GridGeometry& b) { return !(a == b); }
 
  private:
   Vec2 origin_m_ = Vec2::Zero();

@@ -43,10 +43,16 @@ EpisodeSetup makeEpisodeSetup(std::string_view method, std::uint64_t seed,
   if (!settings.config_file.empty()) io::applyConfigFile(settings.config_file, groups);
   if (settings.max_time_s) setup.config.episode.max_time_s = *settings.max_time_s;
   if (settings.remove_floor) setup.cloud.remove_floor_ceiling = true;
-  setup.cloud.validate();
-  setup.config.resolve();
-  setup.config.validate();
-  setup.strategy->validateOptions();
+  try {
+    setup.cloud.validate();
+    setup.config.resolve();
+    setup.config.validate();
+    setup.strategy->validateOptions();
+  } catch (const OptionError& e) {
+    // A value out of range came from the config file unless the command line set it.
+    if (settings.config_file.empty()) throw;
+    throw OptionError(settings.config_file.string() + ": " + e.what());
+  }
   return setup;
 }
 

@@ -49,7 +49,8 @@ struct EpisodeSetup {
 /// Creates the strategy `method` for `seed` and resolves every option. Every registered method
 /// has a group in the config file, so that one file serves all methods; groups of other
 /// methods are checked but not used. Throws OptionError for an unknown method or an option
-/// out of range, InputError for an unreadable or malformed config file (naming it).
+/// out of range (naming the config file, when one is given), InputError for an unreadable or
+/// malformed config file (naming it).
 EpisodeSetup makeEpisodeSetup(std::string_view method, std::uint64_t seed,
                               const RunSettings& settings);
 

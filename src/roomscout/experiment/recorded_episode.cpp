@@ -66,7 +66,7 @@ RecordedEpisode runRecordedEpisode(const sim::WorldModel& model, EpisodeSetup& s
     record["built"] = cloud.description();
   }
   const nlohmann::json analysis_maps =
-      io::writeAnalysisMaps(directory, *explorer.roomMap(), *explorer.skeletonMap(), result.map, model);
+      io::writeAnalysisMaps(directory, *explorer.roomMap(), *explorer.skeletonMap(), result.map, &model);
   for (const auto& [name, summary] : analysis_maps.items()) info.maps[name] = summary;
   io::writeRunOutputs(directory, info, result);
   recorded.metrics = io::metricsJson(info, result);

@@ -63,6 +63,10 @@ class ExplorationStrategy {
   /// rooms, and keep them up to date before each decision; otherwise it may build them in
   /// the background.
   virtual bool readsRooms() const { return false; }
+  /// The frontier points the strategy picks its goals among, as of its last decide(), for
+  /// display (e.g. rviz markers); empty for strategies that keep no such list and read
+  /// frontier cells off the map at each decision.
+  virtual std::vector<Vec2> candidateGoals() const { return {}; }
 
   /// The strategy's tunable options, for configuration files and run records.
   virtual std::vector<ParameterRef> parameters() { return {}; }

@@ -409,4 +409,11 @@ std::optional<Vec2> ImprovedRrt::lookGoal(const ExplorationInput& input) {
   return look_goal_m_;
 }
 
+std::vector<Vec2> ImprovedRrt::candidateGoals() const {
+  std::vector<Vec2> out;
+  out.reserve(frontiers_.size());
+  for (const Point& f : frontiers_) out.push_back(f.p);
+  return out;
+}
+
 }  // namespace roomscout

@@ -116,6 +116,7 @@ class ImprovedRrt final : public ExplorationStrategy {
   void onGoalReached(const Vec2& goal_m) override;
   void onGoalFailed(const Vec2& goal_m) override;
   double replanPeriod_s() const override { return options_.replan_period_s; }
+  std::vector<Vec2> candidateGoals() const override;
   std::vector<ParameterRef> parameters() override { return options_.parameters(); }
   void validateOptions() const override { options_.validate(); }
 

@@ -108,6 +108,7 @@ class RrtExploration final : public ExplorationStrategy {
   void onGoalReached(const Vec2& goal_m) override;
   void onGoalFailed(const Vec2& goal_m) override;
   double replanPeriod_s() const override { return options_.assign_period_s; }
+  std::vector<Vec2> candidateGoals() const override { return centroids_; }
   std::vector<ParameterRef> parameters() override { return options_.parameters(); }
   void validateOptions() const override { options_.validate(); }
 

@@ -795,4 +795,11 @@ Decision SemanticExplorer::decide(const ExplorationInput& input) {
   return Decision::done();
 }
 
+std::vector<Vec2> SemanticExplorer::candidateGoals() const {
+  std::vector<Vec2> out;
+  out.reserve(points_.size());
+  for (const FrontierPoint& f : points_) out.push_back(f.p);
+  return out;
+}
+
 }  // namespace roomscout

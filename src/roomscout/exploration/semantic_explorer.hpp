@@ -176,6 +176,7 @@ class SemanticExplorer final : public ExplorationStrategy {
   void onGoalFailed(const Vec2& goal_m) override;
   double replanPeriod_s() const override { return options_.replan_period_s; }
   bool readsRooms() const override { return true; }
+  std::vector<Vec2> candidateGoals() const override;
   std::vector<ParameterRef> parameters() override { return options_.parameters(); }
   void validateOptions() const override { options_.validate(); }
 

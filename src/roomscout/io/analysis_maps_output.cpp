@@ -20,7 +20,7 @@ cv::Mat groundTruthRoomLabels(const OccupancyGrid& grid, const sim::WorldModel& 
 
 nlohmann::json writeAnalysisMaps(const std::filesystem::path& directory, const AnalysisMap& semantic,
                                  const AnalysisMap& topological, const OccupancyGrid& grid,
-                                 const sim::WorldModel& world) {
+                                 const sim::WorldModel* world) {
   const SemanticMap& rooms = *semantic.semanticMap();
   const TopologicalMap& topo = topological.topologicalMap();
   nlohmann::json extra = nlohmann::json::object();
@@ -29,9 +29,8 @@ nlohmann::json writeAnalysisMaps(const std::filesystem::path& directory, const A
                        {"edges", topo.edges().size()}, {"updates", topological.updateTimes_ms().size()}}},
       {"semantic", {{"files", {"semantic.json", "semantic.png", "semantic_labels.png"}},
                     {"regions", rooms.regions().size()}, {"updates", semantic.updateTimes_ms().size()}}}};
-  const sim::World& w = world.world();
-  if (!w.rooms.empty() || (w.image && !w.image->room_labels.empty())) {
-    const SegmentationScore s = scoreSegmentation(rooms.labels(), groundTruthRoomLabels(grid, world));
+  if (world != nullptr && world->hasRooms()) {
+    const SegmentationScore s = scoreSegmentation(rooms.labels(), groundTruthRoomLabels(grid, *world));
     extra["ground_truth_score"] = {{"rooms", s.ground_truth_rooms}, {"segments", s.segments},
                                    {"recall", s.recall}, {"precision", s.precision},
                                    {"pooled_recall", s.pooled_recall}, {"pooled_precision", s.pooled_precision},

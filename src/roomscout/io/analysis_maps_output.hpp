@@ -16,11 +16,12 @@ namespace roomscout::io {
 /// 0 = none), for scoring a segmentation of that grid.
 cv::Mat groundTruthRoomLabels(const OccupancyGrid& grid, const sim::WorldModel& world);
 
-/// Writes topology.json/.png and semantic.json/.png/_labels.png into `directory`. Returns a
-/// summary for metrics.json's "maps": counts, and for worlds with rooms the segmentation's
-/// score against them (also stored in semantic.json as "ground_truth_score").
+/// Writes topology.json/.png and semantic.json/.png/_labels.png into `directory`, each
+/// atomically. Returns a summary for metrics.json's "maps": counts, and for a world (may be
+/// null, as on a robot) with rooms the segmentation's score against them (also stored in
+/// semantic.json as "ground_truth_score").
 nlohmann::json writeAnalysisMaps(const std::filesystem::path& directory, const AnalysisMap& semantic,
                                  const AnalysisMap& topological, const OccupancyGrid& grid,
-                                 const sim::WorldModel& world);
+                                 const sim::WorldModel* world);
 
 }  // namespace roomscout::io

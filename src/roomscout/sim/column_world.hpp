@@ -7,7 +7,9 @@
 // of an image world from the floor to the default wall height.
 
 #include <cstdint>
+#if __cplusplus >= 202002L
 #include <span>
+#endif
 #include <vector>
 
 #include <Eigen/Core>
@@ -36,9 +38,11 @@ class ColumnWorld {
   double ceiling_m() const { return ceiling_m_; }
 
   /// Solid intervals of a cell inside geometry(), sorted by z and disjoint.
+#if __cplusplus >= 202002L  // the ROS 1 nodes include this header as C++17
   std::span<const ZInterval> intervals(std::size_t cell_index) const {
     return {intervals_.data() + offsets_[cell_index], intervals_.data() + offsets_[cell_index + 1]};
   }
+#endif
   bool columnEmpty(std::size_t cell_index) const { return offsets_[cell_index] == offsets_[cell_index + 1]; }
 
   /// True when the point p_map [m] is inside a solid interval, below the floor or above the

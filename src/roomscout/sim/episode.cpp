@@ -118,8 +118,8 @@ double msSince(Clock::time_point start) {
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
-/// The map a SLAM package would publish: the known area's bounding box plus `margin` cells,
-/// within the world's grid (the mapper's grid is the world's extent).
+}  // namespace
+
 GridGeometry publishedGeometry(const GridGeometry& full, const CellRect& known, int margin) {
   const CellRect r = CellRect{known.min_x - margin, known.min_y - margin, known.max_x + margin,
                               known.max_y + margin}
@@ -128,8 +128,6 @@ GridGeometry publishedGeometry(const GridGeometry& full, const CellRect& known, 
   return GridGeometry(full.origin_m() + Vec2(r.min_x * res, r.min_y * res), res, r.max_x - r.min_x,
                       r.max_y - r.min_y);
 }
-
-}  // namespace
 
 ExplorerOptions explorerOptionsFor(const WorldModel& world, EpisodeConfig config) {
   config.resolve();

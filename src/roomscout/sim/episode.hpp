@@ -127,6 +127,10 @@ struct EpisodeResult {
 /// Progress report for a caller's display: simulated time, limit, current rate.
 using EpisodeProgress = std::function<void(double time_s, double max_time_s, double rate)>;
 
+/// The map a SLAM package would publish: the known area's bounding box (cells of `full`) plus
+/// `margin` cells, clipped to `full` (the simulator's mapper grid, the world's extent).
+GridGeometry publishedGeometry(const GridGeometry& full, const CellRect& known, int margin);
+
 /// config.explorer, resolved for `world`: a stall threshold of 0 becomes 0.1 % of the floor the
 /// robot can reach (a stall window is one in which the map gained less than that).
 ExplorerOptions explorerOptionsFor(const WorldModel& world, EpisodeConfig config);

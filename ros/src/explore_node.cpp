@@ -1,0 +1,461 @@
+// roomscout_explore_node: the library's Explorer on a ROS 1 robot. It reads the map a SLAM
+// package publishes and the robot's pose from tf, sends the goals the Explorer picks to
+// move_base, and publishes the rooms, the skeleton graph, the frontier candidates, the goal
+// and a status. When exploration ends it saves the four maps. A thin adapter: everything it
+// decides, the library decides; a ROS 2 port would keep this shape.
+//
+// Topics, services and parameters: docs/ros.md.
+
+#include <atomic>
+#include <cmath>
+#include <csignal>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <actionlib/client/simple_action_client.h>
+#include <move_base_msgs/MoveBaseAction.h>
+#include <nav_msgs/OccupancyGrid.h>
+#include <nlohmann/json.hpp>
+#include <ros/ros.h>
+#include <rosgraph_msgs/Clock.h>
+#include <sensor_msgs/PointCloud2.h>
+#include <sensor_msgs/point_cloud2_iterator.h>
+#include <std_msgs/String.h>
+#include <std_msgs/Time.h>
+#include <std_srvs/Trigger.h>
+#include <tf2_ros/buffer.h>
+#include <tf2_ros/transform_listener.h>
+#include <visualization_msgs/MarkerArray.h>
+
+#include "roomscout/core/errors.hpp"
+#include "roomscout/experiment/episode_setup.hpp"
+#include "roomscout/exploration/frontier_cells.hpp"
+#include "roomscout/explorer/explorer.hpp"
+#include "roomscout/mapping/keyframe_selector.hpp"
+#include "roomscout/mapping/point_cloud_map.hpp"
+#include "roomscout_ros/grid_conversions.hpp"
+#include "roomscout_ros/map_markers.hpp"
+#include "roomscout_ros/map_saver.hpp"
+
+namespace roomscout::ros1 {
+namespace {
+
+std::atomic<bool> g_stop{false};
+void onSignal(int /*signal*/) { g_stop = true; }
+
+/// The node's own parameters (private namespace); the Explorer's come from `config`.
+struct ExploreNodeParams {
+  std::string method = "semantic";  ///< a strategy name (roomscout methods lists them)
+  std::string config;               ///< YAML options file, as `roomscout explore --config`
+  int seed = 1;                     ///< seeds the strategy's random choices
+  std::string map_frame = "map";
+  std::string base_frame = "base_link";
+  std::string save_dir = "roomscout_maps";  ///< where the maps go at the end; "" = not saved
+  std::string move_base = "move_base";      ///< the MoveBase action's name
+  double cycle_period_s = 0.05;    ///< explore cycle period (also on every map and goal result) [s]
+  double progress_timeout_s = -1;  ///< a goal whose path has not shrunk this long fails [s];
+                                   ///< < 0: the config's episode.no_progress_timeout_s
+  int occupied_percent = 65;       ///< map values at or above: occupied (map_server's 0.65)
+  int free_percent = 19;           ///< map values at or below: free (map_server's 0.196)
+  double marker_period_s = 1.0;    ///< frontier and status publishing period [s]
+
+  static ExploreNodeParams load(const ros::NodeHandle& pn) {
+    ExploreNodeParams p;
+    pn.param("method", p.method, p.method);
+    pn.param("config", p.config, p.config);
+    pn.param("seed", p.seed, p.seed);
+    pn.param("map_frame", p.map_frame, p.map_frame);
+    pn.param("base_frame", p.base_frame, p.base_frame);
+    pn.param("save_dir", p.save_dir, p.save_dir);
+    pn.param("move_base_action", p.move_base, p.move_base);
+    pn.param("cycle_period_s", p.cycle_period_s, p.cycle_period_s);
+    pn.param("progress_timeout_s", p.progress_timeout_s, p.progress_timeout_s);
+    pn.param("occupied_percent", p.occupied_percent, p.occupied_percent);
+    pn.param("free_percent", p.free_percent, p.free_percent);
+    pn.param("marker_period_s", p.marker_period_s, p.marker_period_s);
+    if (p.seed < 0) throw OptionError("~seed must be >= 0, not " + std::to_string(p.seed));
+    if (!(p.cycle_period_s > 0.0)) throw OptionError("~cycle_period_s must be > 0");
+    if (!(p.marker_period_s > 0.0)) throw OptionError("~marker_period_s must be > 0");
+    if (!(p.free_percent >= 0 && p.free_percent < p.occupied_percent && p.occupied_percent <= 100)) {
+      throw OptionError("~free_percent and ~occupied_percent must satisfy 0 <= free < occupied <= 100");
+    }
+    return p;
+  }
+};
+
+using MoveBaseClient = actionlib::SimpleActionClient<move_base_msgs::MoveBaseAction>;
+
+class ExploreNode {
+ public:
+  ExploreNode(const ExploreNodeParams& params, experiment::EpisodeSetup setup)
+      : params_(params),
+        setup_(std::move(setup)),
+        explorer_(std::move(setup_.strategy), explorerOptions(params_, setup_)),
+        tf_listener_(tf_),
+        move_base_(params_.move_base, false),
+        cloud_(setup_.cloud.map),
+        keyframes_(setup_.cloud.keyframes) {
+    ros::NodeHandle nh, pn("~");
+    map_sub_ = nh.subscribe("map", 1, &ExploreNode::onMap, this, ros::TransportHints().tcpNoDelay());
+    // roscpp reads /clock on a thread of its own; this subscription only wakes the loop below
+    // at each tick, so that with a simulator's clock every cycle comes when due.
+    clock_sub_ = nh.subscribe<rosgraph_msgs::Clock>("/clock", 1, [](const rosgraph_msgs::Clock::ConstPtr&) {},
+                                                    ros::VoidConstPtr(), ros::TransportHints().tcpNoDelay());
+    points_sub_ = nh.subscribe("points", 2, &ExploreNode::onPoints, this);
+    rooms_pub_ = pn.advertise<visualization_msgs::MarkerArray>("rooms", 1, true);
+    room_grid_pub_ = pn.advertise<nav_msgs::OccupancyGrid>("room_grid", 1, true);
+    skeleton_pub_ = pn.advertise<visualization_msgs::MarkerArray>("skeleton", 1, true);
+    frontier_pub_ = pn.advertise<visualization_msgs::Marker>("frontiers", 1, true);
+    goal_pub_ = pn.advertise<visualization_msgs::Marker>("goal", 1, true);
+    status_pub_ = pn.advertise<std_msgs::String>("status", 1, true);
+    cycle_pub_ = pn.advertise<std_msgs::Time>("cycle", 10);
+    save_srv_ = pn.advertiseService("save_maps", &ExploreNode::onSaveMaps, this);
+  }
+
+  /// Runs until the node is asked to stop; exploration ending does not stop it (the maps
+  /// stay published and ~save_maps keeps working).
+  void run() {
+    ros::CallbackQueue& queue = *ros::getGlobalCallbackQueue();
+    ros::WallTime next_wait_log = ros::WallTime::now();
+    while (ros::ok() && !g_stop && !move_base_.isServerConnected()) {
+      queue.callAvailable(ros::WallDuration(0.05));
+      if (ros::WallTime::now() >= next_wait_log) {
+        ROS_INFO("waiting for the %s action server", params_.move_base.c_str());
+        next_wait_log = ros::WallTime::now() + ros::WallDuration(5.0);
+      }
+    }
+    while (ros::ok() && !g_stop) {
+      queue.callAvailable(ros::WallDuration(0.01));
+      const ros::Time now = ros::Time::now();
+      const double t = now.toSec();
+      if (!explorer_.done() && t > 0.0 && map_msg_ &&
+          (event_ || t - last_cycle_s_ >= params_.cycle_period_s - 1e-9)) {
+        try {
+          cycle(t);
+        } catch (const std::exception& e) {
+          // A bad input (e.g. a pose or time the library refuses) costs one cycle, not the node.
+          ROS_ERROR_THROTTLE(5.0, "explore cycle failed: %s", e.what());
+        }
+      }
+      caughtUp(now);
+    }
+    if (goal_active_) {
+      move_base_.cancelGoal();
+      ros::WallDuration(0.2).sleep();  // let the cancel go out before the connection closes
+      ROS_INFO("cancelled the current goal");
+    }
+  }
+
+ private:
+  static ExplorerOptions explorerOptions(const ExploreNodeParams& params, experiment::EpisodeSetup& setup) {
+    setup.config.resolve();
+    ExplorerOptions options = setup.config.explorer;
+    // The simulator's 0 (0.1 % of the world's floor) needs a ground truth a robot lacks.
+    if (options.goals.stall_min_new_area_m2 == 0.0) {
+      options.goals.stall_min_new_area_m2 = GoalWatchdogOptions{}.stall_min_new_area_m2;
+    }
+    if (params.progress_timeout_s >= 0.0) options.goals.no_progress_timeout_s = params.progress_timeout_s;
+    options.all_maps = true;
+    options.background_maps = false;  // markers read the maps on this thread
+    options.validate();
+    return options;
+  }
+
+  void onMap(const nav_msgs::OccupancyGrid::ConstPtr& msg) {
+    if (!params_.map_frame.empty() && !msg->header.frame_id.empty() && msg->header.frame_id != params_.map_frame) {
+      ROS_ERROR_THROTTLE(10.0, "map in frame '%s', expected '%s' (~map_frame): ignored",
+                         msg->header.frame_id.c_str(), params_.map_frame.c_str());
+      return;
+    }
+    map_msg_ = msg;
+    map_new_ = true;
+    event_ = true;
+  }
+
+  void onPoints(const sensor_msgs::PointCloud2::ConstPtr& msg) {
+    Pose2 base;
+    geometry_msgs::TransformStamped sensor;
+    try {
+      base = toPose2(tf_.lookupTransform(params_.map_frame, params_.base_frame, msg->header.stamp).transform);
+      sensor = tf_.lookupTransform(params_.map_frame, msg->header.frame_id, msg->header.stamp);
+    } catch (const tf2::TransformException& e) {
+      ROS_WARN_THROTTLE(10.0, "point cloud skipped: %s", e.what());
+      return;
+    }
+    if (!keyframes_.accept(base)) return;
+    const auto& tr = sensor.transform.translation;
+    const auto& q = sensor.transform.rotation;
+    const Eigen::Isometry3f T = Eigen::Translation3f(tr.x, tr.y, tr.z) *
+                                Eigen::Quaternionf(static_cast<float>(q.w), static_cast<float>(q.x),
+                                                   static_cast<float>(q.y), static_cast<float>(q.z));
+    scratch_points_.clear();
+    scratch_points_.reserve(static_cast<std::size_t>(msg->width) * msg->height);
+    sensor_msgs::PointCloud2ConstIterator<float> x(*msg, "x"), y(*msg, "y"), z(*msg, "z");
+    for (; x != x.end(); ++x, ++y, ++z) scratch_points_.push_back(T * Eigen::Vector3f(*x, *y, *z));
+    cloud_.insert(scratch_points_);
+    cloud_top_m_ = std::max(cloud_top_m_, static_cast<double>(tr.z));
+  }
+
+  void onGoalDone(const actionlib::SimpleClientGoalState& state) {
+    goal_active_ = false;
+    using S = actionlib::SimpleClientGoalState;
+    if (state == S::SUCCEEDED) {
+      pending_outcome_ = GoalOutcome::kReached;
+    } else if (state == S::ABORTED || state == S::REJECTED) {
+      ROS_INFO("move_base gave up the goal (%s): it counts as failed", state.toString().c_str());
+      pending_outcome_ = GoalOutcome::kFailed;
+    }
+    event_ = true;
+  }
+
+  bool onSaveMaps(std_srvs::Trigger::Request& /*req*/, std_srvs::Trigger::Response& res) {
+    try {
+      save();
+      res.success = true;
+      res.message = "maps saved to " + params_.save_dir;
+    } catch (const std::exception& e) {
+      res.success = false;
+      res.message = e.what();
+    }
+    return true;
+  }
+
+  void save() {
+    if (!grid_) throw InputError(params_.save_dir, "no map received yet: nothing to save");
+    if (params_.save_dir.empty()) throw OptionError("~save_dir is empty: nowhere to save");
+    saveMaps(params_.save_dir, *grid_, *explorer_.roomMap(), *explorer_.skeletonMap(), cloud_.points(),
+             cloud_top_m_ > 0.0 ? cloud_top_m_ + 1.0 : 2.5);
+  }
+
+  /// One explore cycle: the latest map and pose to the Explorer, its command to move_base.
+  void cycle(double t) {
+    event_ = false;
+    last_cycle_s_ = t;
+    if (map_new_) {
+      map_new_ = false;
+      try {
+        ReceivedGrid received = fromMsg(*map_msg_, grid_ ? &*grid_ : nullptr, params_.occupied_percent,
+                                        params_.free_percent);
+        if (received.changed) {
+          changed_.unite(*received.changed);
+        } else {
+          any_changed_ = true;
+        }
+        grid_ = std::move(received.grid);
+      } catch (const InvalidArgument& e) {
+        ROS_ERROR_THROTTLE(10.0, "%s", e.what());
+        return;
+      }
+    }
+    if (!grid_) return;
+    Pose2 robot;
+    try {
+      robot = toPose2(tf_.lookupTransform(params_.map_frame, params_.base_frame, ros::Time(0)).transform);
+    } catch (const tf2::TransformException& e) {
+      ROS_WARN_THROTTLE(10.0, "no robot pose: %s", e.what());
+      return;
+    }
+    t = std::max(t, last_update_s_);  // a clock reset (e.g. a restarted simulator) never runs time back
+    if (pending_outcome_) {
+      explorer_.report(*pending_outcome_, t);
+      pending_outcome_.reset();
+    }
+    const std::optional<CellRect> hint = any_changed_ ? std::nullopt : std::optional<CellRect>(changed_);
+    const ExplorerCommand command = explorer_.update(ExplorerInput(*grid_, robot, t, hint));
+    ++cycles_;
+    last_update_s_ = t;
+    any_changed_ = false;
+    changed_ = CellRect{};
+    reason_ = std::string(command.reason);
+
+    switch (command.kind) {
+      case ExplorerCommand::Kind::kDrive:
+        if (!goal_active_ || !sent_goal_ || (*sent_goal_ - command.goal_m).norm() > 1e-6) sendGoal(robot, command.goal_m);
+        break;
+      case ExplorerCommand::Kind::kDone:
+        finishExploration(t);
+        return;
+      default:  // kWait, kBackOff: move_base runs its own recovery behaviours
+        cancelGoal();
+        break;
+    }
+    publishMaps(t, robot);
+  }
+
+  /// Publishes ~cycle: every cycle due by `now` is done. A simulator may wait for it
+  /// (roomscout_sim_node's ~sync_topic) so that its clock never runs ahead of the decisions.
+  void caughtUp(const ros::Time& now) {
+    if (now <= caught_up_) return;
+    caught_up_ = now;
+    std_msgs::Time msg;
+    msg.data = now;
+    cycle_pub_.publish(msg);
+  }
+
+  void sendGoal(const Pose2& robot, const Vec2& goal_m) {
+    move_base_msgs::MoveBaseGoal goal;
+    goal.target_pose.header.frame_id = params_.map_frame;
+    goal.target_pose.header.stamp = ros::Time::now();
+    const Vec2 d = goal_m - robot.position();
+    goal.target_pose.pose = toPoseMsg(Pose2{goal_m.x(), goal_m.y(), std::atan2(d.y(), d.x())});
+    move_base_.sendGoal(goal, [this](const actionlib::SimpleClientGoalState& state,
+                                     const move_base_msgs::MoveBaseResultConstPtr&) { onGoalDone(state); });
+    sent_goal_ = goal_m;
+    goal_active_ = true;
+    goal_pub_.publish(pointsMarker({goal_m}, "goal", {0.1f, 0.8f, 0.1f, 1.0f}, 0.3, params_.map_frame,
+                                   goal.target_pose.header.stamp));
+  }
+
+  void cancelGoal() {
+    if (!goal_active_) return;
+    move_base_.cancelGoal();
+    goal_active_ = false;
+    sent_goal_.reset();
+    goal_pub_.publish(pointsMarker({}, "goal", {}, 0.3, params_.map_frame, ros::Time::now()));
+  }
+
+  void finishExploration(double t) {
+    cancelGoal();
+    explorer_.finish(*grid_);
+    ROS_INFO("exploration done after %.1f s: %s", t, reason_.c_str());
+    publishRoomsAndSkeleton();
+    if (!params_.save_dir.empty()) {
+      try {
+        save();
+        ROS_INFO("maps saved to %s", params_.save_dir.c_str());
+      } catch (const std::exception& e) {
+        ROS_ERROR("could not save the maps: %s", e.what());
+      }
+    }
+    publishStatus(t, std::nullopt);
+  }
+
+  void publishMaps(double t, const Pose2& robot) {
+    const int room_updates = static_cast<int>(explorer_.roomMap()->updateTimes_ms().size());
+    const int skeleton_updates = static_cast<int>(explorer_.skeletonMap()->updateTimes_ms().size());
+    if (room_updates != published_room_updates_ || skeleton_updates != published_skeleton_updates_) {
+      published_room_updates_ = room_updates;
+      published_skeleton_updates_ = skeleton_updates;
+      publishRoomsAndSkeleton();
+    }
+    if (t < next_marker_s_) return;
+    next_marker_s_ = t + params_.marker_period_s;
+    std::vector<Vec2> candidates = explorer_.strategy().candidateGoals();
+    if (candidates.empty() && explorer_.costmap().geometry() == grid_->geometry() &&
+        explorer_.costmap().lethalMask().size() == grid_->geometry().cellCount()) {
+      // Strategies that keep no candidate list read frontier cells off the map: show those
+      // (once the costmap follows this map; it is refreshed when the strategy decides).
+      const Vec2 p = robot.position();
+      for (const Cell& c : reachableFrontierCells(*grid_, explorer_.costmap(), 4, nullptr, &p)) {
+        candidates.push_back(grid_->geometry().centerOf(c));
+      }
+    }
+    const std::size_t stride = candidates.size() / 2000 + 1;
+    std::vector<Vec2> shown;
+    for (std::size_t i = 0; i < candidates.size(); i += stride) shown.push_back(candidates[i]);
+    frontier_pub_.publish(pointsMarker(shown, "frontiers", {0.9f, 0.2f, 0.9f, 0.9f}, 0.12, params_.map_frame,
+                                       ros::Time(t)));
+    publishStatus(t, robot);
+  }
+
+  void publishRoomsAndSkeleton() {
+    const ros::Time stamp = ros::Time::now();
+    if (const SemanticMap* rooms = explorer_.roomMap()->semanticMap(); rooms != nullptr && !rooms->labels().empty()) {
+      rooms_pub_.publish(roomMarkers(*rooms, params_.map_frame, stamp));
+      nav_msgs::OccupancyGrid grid;
+      labelsToMsg(rooms->labels(), rooms->geometry(), grid);
+      grid.header.frame_id = params_.map_frame;
+      grid.header.stamp = stamp;
+      room_grid_pub_.publish(grid);
+    }
+    skeleton_pub_.publish(skeletonMarkers(explorer_.skeletonMap()->topologicalMap(), params_.map_frame, stamp));
+  }
+
+  void publishStatus(double t, const std::optional<Pose2>& robot) {
+    std::size_t known = 0;
+    const std::uint8_t* s = grid_->stateBytes();
+    const std::size_t n = grid_->geometry().cellCount();
+    for (std::size_t i = 0; i < n; ++i) known += s[i] != 0;
+    const double res = grid_->geometry().resolution_m();
+    const SemanticMap* rooms = explorer_.roomMap()->semanticMap();
+    nlohmann::json j = {
+        {"time_s", t},
+        {"known_area_m2", static_cast<double>(known) * res * res},
+        {"current_room", robot && rooms != nullptr ? rooms->roomAt(robot->position()) : 0},
+        {"rooms", rooms != nullptr ? rooms->regions().size() : 0},
+        {"done", explorer_.done()},
+        {"state", reason_},
+        {"goals", explorer_.stats().goals},
+        {"goal_failures", explorer_.stats().goal_failures},
+        {"cycles", cycles_},
+        {"method", params_.method},
+    };
+    if (sent_goal_) j["goal"] = {sent_goal_->x(), sent_goal_->y()};
+    std_msgs::String msg;
+    msg.data = j.dump();
+    status_pub_.publish(msg);
+  }
+
+  ExploreNodeParams params_;
+  experiment::EpisodeSetup setup_;
+  Explorer explorer_;
+  tf2_ros::Buffer tf_;
+  tf2_ros::TransformListener tf_listener_;
+  MoveBaseClient move_base_;
+  PointCloudMap cloud_;
+  KeyframeSelector keyframes_;
+  std::vector<Eigen::Vector3f> scratch_points_;
+  double cloud_top_m_ = 0.0;
+
+  ros::Subscriber map_sub_, points_sub_, clock_sub_;
+  ros::Publisher rooms_pub_, room_grid_pub_, skeleton_pub_, frontier_pub_, goal_pub_, status_pub_, cycle_pub_;
+  ros::ServiceServer save_srv_;
+
+  nav_msgs::OccupancyGrid::ConstPtr map_msg_;
+  bool map_new_ = false;
+  std::optional<OccupancyGrid> grid_;
+  CellRect changed_;
+  bool any_changed_ = true;
+  bool event_ = false;
+  double last_cycle_s_ = 0.0, last_update_s_ = 0.0, next_marker_s_ = 0.0;
+  std::optional<GoalOutcome> pending_outcome_;
+  bool goal_active_ = false;
+  std::optional<Vec2> sent_goal_;
+  std::string reason_;
+  int published_room_updates_ = -1, published_skeleton_updates_ = -1;
+  long cycles_ = 0;  ///< Explorer updates so far
+  ros::Time caught_up_;  ///< the last time published on ~cycle
+};
+
+}  // namespace
+}  // namespace roomscout::ros1
+
+int main(int argc, char** argv) {
+  using namespace roomscout;
+  ros::init(argc, argv, "roomscout_explore", ros::init_options::NoSigintHandler);
+  std::signal(SIGINT, ros1::onSignal);
+  std::signal(SIGTERM, ros1::onSignal);
+  std::unique_ptr<ros1::ExploreNode> node;
+  ros1::ExploreNodeParams params;
+  try {
+    ros::NodeHandle pn("~");
+    params = ros1::ExploreNodeParams::load(pn);
+    experiment::RunSettings settings;
+    settings.config_file = params.config;
+    experiment::EpisodeSetup setup =
+        experiment::makeEpisodeSetup(params.method, static_cast<std::uint64_t>(params.seed), settings);
+    node = std::make_unique<ros1::ExploreNode>(params, std::move(setup));
+  } catch (const std::exception& e) {
+    std::cerr << "roomscout_explore_node: " << e.what() << "\n";
+    ROS_FATAL("%s", e.what());
+    return 1;
+  }
+  ROS_INFO("exploring with %s", params.method.c_str());
+  node->run();
+  node.reset();
+  ros::shutdown();
+  return 0;
+}

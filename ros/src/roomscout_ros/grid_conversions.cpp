@@ -1,0 +1,128 @@
+#include "roomscout_ros/grid_conversions.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <cstdlib>
+#include <string>
+
+#include "roomscout/core/errors.hpp"
+
+namespace roomscout::ros1 {
+namespace {
+
+double yawOf(double x, double y, double z, double w) {
+  return std::atan2(2.0 * (w * z + x * y), 1.0 - 2.0 * (y * y + z * z));
+}
+
+/// The decimal a float resolution was written from (0.05f is 0.0500000007; the map is 0.05):
+/// the shortest text that reads back as the same float, read as a double.
+double decimalOf(float value) {
+  char text[32];
+  const auto end = std::to_chars(text, text + sizeof text - 1, value).ptr;
+  *end = '\0';
+  return std::strtod(text, nullptr);
+}
+
+}  // namespace
+
+ReceivedGrid fromMsg(const nav_msgs::OccupancyGrid& msg, const OccupancyGrid* previous, int occupied_percent,
+                     int free_percent) {
+  const auto& info = msg.info;
+  const auto& q = info.origin.orientation;
+  if (!(std::isfinite(info.resolution) && info.resolution > 0.0f)) {
+    throw InvalidArgument("map message: resolution " + std::to_string(info.resolution) + " is not > 0");
+  }
+  if (info.width == 0 || info.height == 0) throw InvalidArgument("map message: the map is empty (0 cells)");
+  if (msg.data.size() != static_cast<std::size_t>(info.width) * info.height) {
+    throw InvalidArgument("map message: " + std::to_string(msg.data.size()) + " cells of data for a " +
+                          std::to_string(info.width) + " x " + std::to_string(info.height) + " map");
+  }
+  const double yaw = yawOf(q.x, q.y, q.z, q.w);
+  if (std::abs(yaw) > 1e-6 || std::abs(q.x) > 1e-6 || std::abs(q.y) > 1e-6) {
+    throw InvalidArgument("map message: the origin is rotated (yaw " + std::to_string(yaw) +
+                          " rad); only maps aligned with their frame are supported");
+  }
+  const GridGeometry geometry(Vec2(info.origin.position.x, info.origin.position.y), decimalOf(info.resolution),
+                              static_cast<int>(info.width), static_cast<int>(info.height));
+  ReceivedGrid out{OccupancyGrid(geometry), std::nullopt};
+  const std::size_t n = msg.data.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const int v = msg.data[i];
+    if (v < 0) continue;  // unknown, as constructed
+    if (v >= occupied_percent) {
+      out.grid.setState(i, CellState::kOccupied);
+    } else if (v <= free_percent) {
+      out.grid.setState(i, CellState::kFree);
+    }
+  }
+  if (previous != nullptr && previous->geometry() == geometry) {
+    CellRect changed;
+    const std::uint8_t* a = previous->stateBytes();
+    const std::uint8_t* b = out.grid.stateBytes();
+    const int w = geometry.width();
+    for (int y = 0; y < geometry.height(); ++y) {
+      const std::size_t row = static_cast<std::size_t>(y) * w;
+      for (int x = 0; x < w; ++x) {
+        if (a[row + x] != b[row + x]) changed.expandToInclude(Cell{x, y});
+      }
+    }
+    out.changed = changed;
+  }
+  return out;
+}
+
+void toMsg(const OccupancyGrid& grid, nav_msgs::OccupancyGrid& msg) {
+  const GridGeometry& g = grid.geometry();
+  msg.info.resolution = static_cast<float>(g.resolution_m());  // read back by decimalOf()
+  msg.info.width = static_cast<std::uint32_t>(g.width());
+  msg.info.height = static_cast<std::uint32_t>(g.height());
+  msg.info.origin = toPoseMsg(Pose2{g.origin_m().x(), g.origin_m().y(), 0.0});
+  const std::size_t n = static_cast<std::size_t>(g.width()) * g.height();
+  msg.data.resize(n);
+  static constexpr std::int8_t kValue[3] = {-1, 0, 100};  // by CellState
+  const std::uint8_t* states = grid.stateBytes();
+  for (std::size_t i = 0; i < n; ++i) msg.data[i] = kValue[states[i]];
+}
+
+void labelsToMsg(const cv::Mat& labels, const GridGeometry& geometry, nav_msgs::OccupancyGrid& msg) {
+  if (labels.type() != CV_32S || labels.rows != geometry.height() || labels.cols != geometry.width()) {
+    throw InvalidArgument("room labels: expected a CV_32S image of " + std::to_string(geometry.width()) + " x " +
+                          std::to_string(geometry.height()) + " cells");
+  }
+  msg.info.resolution = static_cast<float>(geometry.resolution_m());
+  msg.info.width = static_cast<std::uint32_t>(geometry.width());
+  msg.info.height = static_cast<std::uint32_t>(geometry.height());
+  msg.info.origin = toPoseMsg(Pose2{geometry.origin_m().x(), geometry.origin_m().y(), 0.0});
+  msg.data.resize(static_cast<std::size_t>(geometry.width()) * geometry.height());
+  std::size_t i = 0;
+  for (int y = 0; y < labels.rows; ++y) {
+    const int* row = labels.ptr<int>(y);
+    for (int x = 0; x < labels.cols; ++x, ++i) {
+      msg.data[i] = row[x] <= 0 ? std::int8_t{-1} : static_cast<std::int8_t>((row[x] - 1) % 100 + 1);
+    }
+  }
+}
+
+Pose2 toPose2(const geometry_msgs::Pose& pose) {
+  const auto& q = pose.orientation;
+  return Pose2{pose.position.x, pose.position.y, yawOf(q.x, q.y, q.z, q.w)};
+}
+
+Pose2 toPose2(const geometry_msgs::Transform& transform) {
+  const auto& q = transform.rotation;
+  return Pose2{transform.translation.x, transform.translation.y, yawOf(q.x, q.y, q.z, q.w)};
+}
+
+geometry_msgs::Pose toPoseMsg(const Pose2& pose) {
+  geometry_msgs::Pose p;
+  p.position.x = pose.x_m;
+  p.position.y = pose.y_m;
+  p.position.z = 0.0;
+  p.orientation.x = 0.0;
+  p.orientation.y = 0.0;
+  p.orientation.z = std::sin(0.5 * pose.yaw_rad);
+  p.orientation.w = std::cos(0.5 * pose.yaw_rad);
+  return p;
+}
+
+}  // namespace roomscout::ros1
