@@ -14,7 +14,10 @@
 #include <std_srvs/Trigger.h>
 #include <visualization_msgs/MarkerArray.h>
 
+#include "roomscout/experiment/episode_setup.hpp"
 #include "roomscout/io/pcd_io.hpp"
+#include "roomscout/io/world_source.hpp"
+#include "roomscout/sim/episode.hpp"
 #include "ros_test_support.hpp"
 
 namespace roomscout::ros1::test {
@@ -44,8 +47,31 @@ class StatusListener {
 std::string simNode() { return std::string(ROOMSCOUT_ROS_PACKAGE_DIR) + "/bin/roomscout_sim_node"; }
 std::string exploreNode() { return std::string(ROOMSCOUT_ROS_PACKAGE_DIR) + "/bin/roomscout_explore_node"; }
 
-TEST(RosSystem, SemanticExploresSmallHouseOverRos) {
+/// The in-process episode of `method` on small_house with the options of `config`.
+sim::EpisodeResult inProcess(const std::string& method, std::uint64_t seed, const std::filesystem::path& config) {
+  experiment::RunSettings settings;
+  settings.config_file = config;
+  experiment::EpisodeSetup setup = experiment::makeEpisodeSetup(method, seed, settings);
+  const sim::WorldModel model(io::loadWorld("small_house", std::nullopt), setup.config.world);
+  Explorer explorer(*setup.strategy, sim::explorerOptionsFor(model, setup.config));
+  return sim::runEpisode(model, setup.config, explorer, seed);
+}
+
+TEST(RosSystem, SemanticExploresSmallHouseOverRosAsInProcess) {
   RosMaster master;
+  // The options of both runs: the growing map the sim node publishes, and the simulator's
+  // stall threshold (0.1 % of the reachable floor), which the explore node cannot know.
+  const std::filesystem::path options = master.dir() / "options.yaml";
+  {
+    sim::EpisodeConfig config;
+    const sim::WorldModel model(io::loadWorld("small_house", std::nullopt), config.world);
+    const double stall = sim::explorerOptionsFor(model, config).goals.stall_min_new_area_m2;
+    std::FILE* f = std::fopen(options.c_str(), "w");
+    std::fprintf(f, "episode:\n  map_mode: growing\n  stall_min_new_area_m2: %.17g\n", stall);
+    std::fclose(f);
+  }
+  const sim::EpisodeResult reference = inProcess("semantic", 1, options);
+  ASSERT_TRUE(reference.t98_s && reference.l98_m);
   master.initClient("ros_system_test");
   ros::NodeHandle nh;
   ros::param::set("/use_sim_time", true);
@@ -60,8 +86,10 @@ TEST(RosSystem, SemanticExploresSmallHouseOverRos) {
   const std::filesystem::path maps = master.dir() / "maps";
   const auto wall_start = std::chrono::steady_clock::now();
   auto sim = master.node(simNode(), "sim",
-                        {"_world:=small_house", "_seed:=1", "_sync_topic:=/explore/cycle", "_points:=true"});
-  auto explore = master.node(exploreNode(), "explore", {"_method:=semantic", "_seed:=1", "_save_dir:=" + maps.string()});
+                        {"_world:=small_house", "_seed:=1", "_sync_topic:=/explore/cycle", "_points:=true",
+                         "_config:=" + options.string()});
+  auto explore = master.node(exploreNode(), "explore", {"_method:=semantic", "_seed:=1", "_save_dir:=" + maps.string(),
+                                                        "_config:=" + options.string()});
   const bool done = spinUntil([&] { return explore_status.is("done", true); }, seconds(400),
                               [&] { return !sim->poll() && !explore->poll(); });
   const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
@@ -71,10 +99,15 @@ TEST(RosSystem, SemanticExploresSmallHouseOverRos) {
   spinUntil([&] { return false; }, seconds(2));
   ASSERT_TRUE(sim_status.last().has_value());
   const nlohmann::json& truth = *sim_status.last();
-  std::printf("over ROS: rate %.4f, T98 %s s, L98 %s m, wall %.1f s\n", truth["rate"].get<double>(),
-              truth["t98_s"].dump().c_str(), truth["l98_m"].dump().c_str(), wall_s);
   EXPECT_GE(truth["rate"].get<double>(), 0.98);
-  EXPECT_FALSE(truth["t98_s"].is_null());
+  ASSERT_FALSE(truth["t98_s"].is_null());
+  // The round trip over ROS (lockstep) explores as the in-process episode does. The runs are
+  // not identical: the nodes' messages may arrive a step apart.
+  const double t98 = truth["t98_s"].get<double>(), l98 = truth["l98_m"].get<double>();
+  std::printf("in-process: T98 %.1f s, L98 %.1f m; over ROS: T98 %.1f s, L98 %.1f m, wall %.1f s\n",
+              *reference.t98_s, *reference.l98_m, t98, l98, wall_s);
+  EXPECT_NEAR(t98, *reference.t98_s, 0.1 * *reference.t98_s);
+  EXPECT_NEAR(l98, *reference.l98_m, 0.1 * *reference.l98_m);
   for (const char* file : {"occupancy.pgm", "occupancy.yaml", "pointcloud.pcd", "topology.json", "topology.png",
                            "semantic.json", "semantic.png", "semantic_labels.png"}) {
     EXPECT_TRUE(std::filesystem::exists(maps / file)) << file;
