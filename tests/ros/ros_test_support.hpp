@@ -155,6 +155,10 @@ class RosMaster {
   /// Joins this process to the master as a ROS node (once per process: ctest runs each test
   /// in a process of its own).
   void initClient(const std::string& name) const {
+    if (ros::isInitialized()) {
+      // roscpp joins one master per process, for good: a second would hang on the first's.
+      throw std::logic_error("one ROS system test per process: run them through ctest or --gtest_filter");
+    }
     for (const auto& [k, v] : env_) ::setenv(k.c_str(), v.c_str(), 1);
     std::map<std::string, std::string> remappings = {{"__master", uri()}, {"__hostname", "localhost"}};
     ros::init(remappings, name, ros::init_options::NoSigintHandler | ros::init_options::AnonymousName);
