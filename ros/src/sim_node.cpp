@@ -53,6 +53,7 @@
 #include "roomscout/mapping/occupancy_mapper.hpp"
 #include "roomscout/planning/astar_planner.hpp"
 #include "roomscout/planning/costmap.hpp"
+#include "roomscout/planning/path_blocking.hpp"
 #include "roomscout/planning/path_follower.hpp"
 #include "roomscout/sim/column_world.hpp"
 #include "roomscout/sim/episode.hpp"
@@ -243,18 +244,6 @@ Scenario loadScenario(const NodeParameters& p) {
                       std::string(e.what()));
   }
   return s;
-}
-
-/// Cell offsets of a disc of `radius_cells`, for checking a path against occupied cells.
-std::vector<Cell> discOffsets(double radius_cells) {
-  std::vector<Cell> offsets;
-  const int r = static_cast<int>(std::ceil(radius_cells));
-  for (int dy = -r; dy <= r; ++dy) {
-    for (int dx = -r; dx <= r; ++dx) {
-      if (dx * dx + dy * dy < radius_cells * radius_cells) offsets.push_back({dx, dy});
-    }
-  }
-  return offsets;
 }
 
 const char* planStatusText(PlanStatus status) {
@@ -824,21 +813,10 @@ bool SimNode::replan(std::string& why) {
 
 bool SimNode::pathBlocked() const {
   if (!follower_.hasPath()) return false;
-  const GridGeometry& g = grid_.geometry();
   // Beyond the laser's range a new scan cannot have blocked the path.
-  const double horizon_m =
-      config_.laser.range_max_m + config_.explorer.costmap.lethalRadius_m() + 0.5;
-  const Vec2 robot = robot_.pose().position();
-  const std::vector<Vec2>& w = follower_.path().waypoints_m;
-  for (std::size_t i = follower_.progressIndex(); i < w.size(); ++i) {
-    if ((w[i] - robot).squaredNorm() > horizon_m * horizon_m) continue;
-    const Cell c = g.cellOf(w[i]);
-    for (const Cell& o : lethal_disc_) {
-      const Cell q{c.x + o.x, c.y + o.y};
-      if (g.contains(q) && grid_.isOccupied(g.index(q))) return true;
-    }
-  }
-  return false;
+  const double horizon_m = config_.laser.range_max_m + config_.explorer.costmap.lethalRadius_m() + 0.5;
+  return pathBlockedAhead(grid_, follower_.path().waypoints_m, follower_.progressIndex(), robot_.pose().position(),
+                          horizon_m, lethal_disc_);
 }
 
 void SimNode::monitorGoal(const CellRect& changed, bool scanned, const ros::Time& stamp) {

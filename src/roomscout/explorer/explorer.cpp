@@ -6,6 +6,7 @@
 #include <string>
 
 #include "roomscout/core/errors.hpp"
+#include "roomscout/planning/path_blocking.hpp"
 
 namespace roomscout {
 
@@ -24,18 +25,6 @@ constexpr double kRetryDelay_s = 1.0;
 constexpr double kMinProgress_m = 0.05;
 
 bool finiteNonNegative(double v) { return std::isfinite(v) && v >= 0.0; }
-
-/// Cell offsets of a disc, for checking a path against newly mapped obstacles.
-std::vector<Cell> discOffsets(double radius_cells) {
-  std::vector<Cell> offsets;
-  const int r = static_cast<int>(std::ceil(radius_cells));
-  for (int dy = -r; dy <= r; ++dy) {
-    for (int dx = -r; dx <= r; ++dx) {
-      if (dx * dx + dy * dy < radius_cells * radius_cells) offsets.push_back({dx, dy});
-    }
-  }
-  return offsets;
-}
 
 std::size_t freeCells(const OccupancyGrid& grid) {
   const std::uint8_t* s = grid.stateBytes();
@@ -210,21 +199,9 @@ void Explorer::stallWatchdog(const OccupancyGrid& grid, const Vec2& robot, doubl
 }
 
 bool Explorer::pathBlocked(const OccupancyGrid& grid, const Vec2& robot) const {
-  // True when an occupied cell lies within the lethal disc of a waypoint ahead of the robot,
-  // among the waypoints a scan from here can have reached.
-  const GridGeometry& g = grid.geometry();
   // Beyond the laser's range a new scan cannot have blocked the path.
   const double horizon_m = options_.goals.laser_range_m + options_.costmap.lethalRadius_m() + 0.5;
-  const std::vector<Vec2>& w = progress_.path().waypoints_m;
-  for (std::size_t i = progress_.index(); i < w.size(); ++i) {
-    if ((w[i] - robot).squaredNorm() > horizon_m * horizon_m) continue;
-    const Cell c = g.cellOf(w[i]);
-    for (const Cell& o : lethal_disc_) {
-      const Cell q{c.x + o.x, c.y + o.y};
-      if (g.contains(q) && grid.isOccupied(g.index(q))) return true;
-    }
-  }
-  return false;
+  return pathBlockedAhead(grid, progress_.path().waypoints_m, progress_.index(), robot, horizon_m, lethal_disc_);
 }
 
 ExplorerCommand Explorer::update(const ExplorerInput& input) {
