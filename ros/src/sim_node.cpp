@@ -324,7 +324,7 @@ class SimNode {
   /// Plans from the robot to the active goal on the current map; false (with `why`) if none.
   bool replan(std::string& why);
   /// True when an occupied cell lies within the lethal radius of a waypoint ahead of the
-  /// robot that the laser can have seen (Explorer::pathBlocked's test).
+  /// robot that the laser can have seen (pathBlockedAhead, as the Explorer checks).
   bool pathBlocked() const;
   /// Checks the active goal after a scan: back-off over, path blocked, goal reached.
   void monitorGoal(const CellRect& changed, bool scanned, const ros::Time& stamp);
