@@ -63,6 +63,7 @@
 #include "roomscout/sim/robot.hpp"
 #include "roomscout/sim/world_model.hpp"
 #include "roomscout_ros/grid_conversions.hpp"
+#include "roomscout_ros/node_params.hpp"
 
 namespace roomscout::ros1 {
 namespace {
@@ -107,17 +108,6 @@ struct NodeParameters {
   std::string base_frame = "base_link";
   std::optional<AbortZone> abort_zone;
 };
-
-/// The parameter `name` if set, else `fallback`. Throws OptionError when it is set with
-/// another type (getParam would otherwise leave the fallback silently).
-template <class T>
-T typedParam(const ros::NodeHandle& pnh, const std::string& name, const T& fallback,
-             const char* expected) {
-  if (!pnh.hasParam(name)) return fallback;
-  T value;
-  if (!pnh.getParam(name, value)) throw OptionError("~" + name + " must be " + expected);
-  return value;
-}
 
 /// A number as a person writes it (no trailing zeros).
 std::string formatNumber(double v) {

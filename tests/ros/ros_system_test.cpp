@@ -192,6 +192,8 @@ TEST(RosSystem, NodesRefuseBadParametersWithAClearMessage) {
   const std::string out = refusedStart(master, exploreNode(), {"_config:=" + bad.string()});
   EXPECT_NE(out.find(bad.string() + ": costmap.inflation_margin_m"), std::string::npos) << out;
   EXPECT_NE(refusedStart(master, simNode(), {"_world:=no_such_world"}).find("no_such_world"), std::string::npos);
+  // A parameter of the wrong type is refused, not replaced by its default.
+  EXPECT_NE(refusedStart(master, exploreNode(), {"_seed:=abc"}).find("~seed must be an integer"), std::string::npos);
 }
 
 /// Output of a command run to its end (stdout and stderr).
