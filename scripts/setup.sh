@@ -7,7 +7,7 @@ cd "$(dirname "$0")/.."
 
 packages=(
   build-essential cmake pkg-config git ca-certificates
-  libeigen3-dev libopencv-dev libopencv-contrib-dev libpcl-dev
+  libeigen3-dev libopencv-dev libopencv-contrib-dev libpcl-dev libmrpt-slam-dev
   libyaml-cpp-dev nlohmann-json3-dev libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   # ROS 1, for the nodes in ros/ and their tests (label "ros")

@@ -286,9 +286,8 @@ TEST(LidarSimulator, ScanIsVlp16AndEveryPointLiesOnASurface) {
   const WorldModel model(furnishedRoom());
   const ColumnWorld columns(model);
   for (double noise_m : {0.0, 0.02}) {
-    LidarOptions options;
-    options.range_noise_m = noise_m;
-    LidarSimulator lidar(columns, options, 7);
+    const LidarOptions options;
+    LidarSimulator lidar(columns, options, 7, RangeNoise{.sd_near_m = noise_m});
     EXPECT_EQ(lidar.columns(), 1800);
     const Pose2 pose{4.0, 3.0, 0.7};
     const LidarScan scan = lidar.scan(pose);
@@ -318,9 +317,9 @@ TEST(LidarSimulator, ScanIsVlp16AndEveryPointLiesOnASurface) {
 TEST(LidarSimulator, DeterministicForASeed) {
   const WorldModel model(testing::squareRoom(10.0, 0.2));
   const ColumnWorld columns(model);
-  LidarOptions options;
-  options.range_noise_m = 0.03;
-  LidarSimulator a(columns, options, 11), b(columns, options, 11), c(columns, options, 12);
+  const LidarOptions options;
+  const RangeNoise noise{.sd_near_m = 0.03};
+  LidarSimulator a(columns, options, 11, noise), b(columns, options, 11, noise), c(columns, options, 12, noise);
   const Pose2 pose{5.0, 5.0, 0.0};
   const LidarScan sa = a.scan(pose), sb = b.scan(pose), sc = c.scan(pose);
   ASSERT_EQ(sa.points_sensor.size(), sb.points_sensor.size());

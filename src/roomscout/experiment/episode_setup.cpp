@@ -48,6 +48,7 @@ EpisodeSetup makeEpisodeSetup(std::string_view method, std::uint64_t seed,
     setup.config.resolve();
     setup.config.validate();
     setup.strategy->validateOptions();
+    setup.cloud.lidar_noise = setup.config.noise.resolved().lidar;
   } catch (const OptionError& e) {
     // A value out of range came from the config file unless the command line set it.
     if (settings.config_file.empty()) throw;

@@ -21,11 +21,17 @@ nlohmann::json timing(const sim::TimingStats& s) {
 }
 
 std::string trajectoryCsv(const sim::EpisodeResult& result) {
-  std::string out = "time_s,x_m,y_m,yaw_rad\n";
-  char line[128];
+  // With SLAM, the estimated pose follows the true one on each line.
+  const bool slam = result.slam.has_value();
+  std::string out = slam ? "time_s,x_m,y_m,yaw_rad,est_x_m,est_y_m,est_yaw_rad\n" : "time_s,x_m,y_m,yaw_rad\n";
+  char line[192];
   for (const sim::TrajectorySample& s : result.trajectory) {
-    std::snprintf(line, sizeof line, "%.2f,%.4f,%.4f,%.4f\n", s.time_s, s.pose.x_m, s.pose.y_m,
-                  s.pose.yaw_rad);
+    if (slam) {
+      std::snprintf(line, sizeof line, "%.2f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f\n", s.time_s, s.pose.x_m, s.pose.y_m,
+                    s.pose.yaw_rad, s.estimate.x_m, s.estimate.y_m, s.estimate.yaw_rad);
+    } else {
+      std::snprintf(line, sizeof line, "%.2f,%.4f,%.4f,%.4f\n", s.time_s, s.pose.x_m, s.pose.y_m, s.pose.yaw_rad);
+    }
     out += line;
   }
   return out;
@@ -38,6 +44,7 @@ nlohmann::json metricsJson(const RunInfo& info, const sim::EpisodeResult& r) {
                               {"costmap", timing(r.costmap_update)},
                               {"decision", timing(r.decision)}};
   for (const auto& [name, stats] : r.map_updates) update_ms[name] = timing(stats);
+  if (r.slam) update_ms["slam"] = timing(r.slam_update);
   nlohmann::json curve = nlohmann::json::array();
   for (const sim::CurveSample& c : r.curve) curve.push_back({c.time_s, c.length_m, c.rate});
   nlohmann::json metrics = {
@@ -69,6 +76,14 @@ nlohmann::json metricsJson(const RunInfo& info, const sim::EpisodeResult& r) {
       {"curve", curve},
       {"options", info.options},
   };
+  if (r.slam) {
+    metrics["slam"] = {{"mode", r.slam->mode},
+                       {"ate_rmse_m", r.slam->error.rmse_m},
+                       {"ate_max_m", r.slam->error.max_m},
+                       {"heading_rmse_rad", r.slam->error.heading_rmse_rad},
+                       {"map_precision", r.slam->map_precision},
+                       {"diverged", r.slam->diverged}};
+  }
   if (!info.maps.is_null()) metrics["maps"] = info.maps;
   return metrics;
 }

@@ -62,6 +62,8 @@ void EpisodeConfig::validate() const {
   mapping.validate();
   follower.validate();
   episode.validate();
+  noise.validate();
+  slam.validate();
   explorer.validate();
 }
 
@@ -80,6 +82,8 @@ std::vector<ParameterGroup> EpisodeConfig::groups() {
       {"mapping", mapping.parameters()},
       {"follower", without(follower.parameters(), {"max_linear_speed_mps", "max_angular_speed_radps"})},
       {"episode", episode.parameters()},
+      {"noise", noise.parameters()},
+      {"slam", slam.parameters()},
   };
   for (ParameterGroup& g : explorer.groups()) {
     if (g.name == "follower" || g.name == "laser") continue;  // mirrored (resolve())
@@ -167,8 +171,18 @@ EpisodeResult runEpisode(const WorldModel& world, EpisodeConfig config, Explorer
   CellRect changed_since_sample;
   OccupancyGrid grid(map_geometry, config.mapping);
   OccupancyMapper mapper(grid);
-  LaserSimulator laser(world, config.laser, seed ^ 0x9E3779B97F4A7C15ull);
+  const NoiseProfile noise = config.noise.resolved();
+  LaserSimulator laser(world, config.laser, seed ^ 0x9E3779B97F4A7C15ull, noise.laser);
   Robot robot(world, config.robot, world.start());
+  // With SLAM the robot knows only its odometry and MRPT's estimate, at which it maps; the
+  // exploration rate honestly counts that map as it lies in the world frame.
+  std::unique_ptr<slam::Slam> slam;
+  std::optional<OdometrySimulator> odometry;
+  if (config.slam.slamMode() != slam::SlamMode::kNone) {
+    slam = std::make_unique<slam::Slam>(config.slam, world.start(), seed ^ 0xD1B54A32D192ED03ull);
+    odometry.emplace(noise.odometry, world.start(), seed ^ 0x94D049BB133111EBull);
+  }
+  Pose2 estimate = robot.pose();
   PathFollower follower(config.follower);
   // Growing mode: the map the Explorer sees, and the bounding box of the known cells.
   OccupancyGrid published;
@@ -210,13 +224,19 @@ EpisodeResult runEpisode(const WorldModel& world, EpisodeConfig config, Explorer
     CellRect changed;
     if (t >= next_scan_s - 1e-9) {
       const LaserScan scan = laser.scan(robot.pose());
+      if (slam) {
+        // MRPT estimates the pose from its own map; the grid is built from every scan at that
+        // estimate, as a robot's costmap is, so drift shows in it.
+        slam->update(scan, odometry->pose());
+        estimate = slam->pose(odometry->pose());
+      }
       const auto start = Clock::now();
-      changed = mapper.integrate(scan, robot.pose());
-      changed_since_sample.unite(changed);
+      changed = mapper.integrate(scan, estimate);
       occupancy_ms.push_back(msSince(start));
+      changed_since_sample.unite(changed);
       next_scan_s += scan_period_s;
       scanned = true;
-      result.trajectory.push_back({t, robot.pose()});
+      result.trajectory.push_back({t, robot.pose(), estimate});
     }
     if (t >= next_metrics_s - 1e-9) {
       sampleMetrics();
@@ -224,7 +244,7 @@ EpisodeResult runEpisode(const WorldModel& world, EpisodeConfig config, Explorer
       if (progress) progress(t, max_time_s, rate);
     }
 
-    for (EpisodeObserver* o : observers) o->onStep(EpisodeSnapshot{t, robot.pose(), grid, world, scanned});
+    for (EpisodeObserver* o : observers) o->onStep(EpisodeSnapshot{t, robot.pose(), grid, world, scanned, estimate});
 
     // 2. Publish the map and ask the Explorer what to do.
     const OccupancyGrid* map = &grid;
@@ -244,7 +264,7 @@ EpisodeResult runEpisode(const WorldModel& world, EpisodeConfig config, Explorer
       }
       map = &published;
     }
-    const ExplorerCommand command = explorer.update(ExplorerInput{*map, robot.pose(), t, hint});
+    const ExplorerCommand command = explorer.update(ExplorerInput{*map, estimate, t, hint});
     if (command.kind == ExplorerCommand::Kind::kDone) {
       result.t_done_s = t;
       result.l_done_m = robot.odometer_m();
@@ -256,7 +276,7 @@ EpisodeResult runEpisode(const WorldModel& world, EpisodeConfig config, Explorer
     switch (command.kind) {
       case ExplorerCommand::Kind::kDrive:
         if (command.new_path) follower.setPath(*command.path);
-        velocity = follower.compute(robot.pose());
+        velocity = follower.compute(estimate);
         break;
       case ExplorerCommand::Kind::kBackOff:
         follower.clear();
@@ -266,7 +286,14 @@ EpisodeResult runEpisode(const WorldModel& world, EpisodeConfig config, Explorer
         follower.clear();
         break;
     }
+    const Pose2 before = robot.pose();
     const bool moved = robot.step(velocity, opt.dt_s);
+    if (slam) {
+      odometry->step(before, robot.pose());
+      estimate = slam->pose(odometry->pose());
+    } else {
+      estimate = robot.pose();
+    }
     if (velocity.linear_mps > 0.0 && !moved) {
       blocked_for_s += opt.dt_s;
       if (blocked_for_s >= opt.stuck_timeout_s) {
@@ -303,7 +330,7 @@ EpisodeResult runEpisode(const WorldModel& world, EpisodeConfig config, Explorer
     if (m != nullptr) result.map_updates[std::string(m->name())] = TimingStats::of(m->updateTimes_ms());
   }
   for (EpisodeObserver* o : observers) {
-    o->onFinish(EpisodeSnapshot{t, robot.pose(), grid, world, true});
+    o->onFinish(EpisodeSnapshot{t, robot.pose(), grid, world, true, estimate});
     result.map_updates[std::string(o->name())] = TimingStats::of(o->updateTimes_ms());
   }
   const ExplorerStats& stats = explorer.stats();
@@ -319,6 +346,15 @@ EpisodeResult runEpisode(const WorldModel& world, EpisodeConfig config, Explorer
   result.occupancy_update = TimingStats::of(std::move(occupancy_ms));
   result.costmap_update = TimingStats::of(stats.costmap_ms);
   result.decision = TimingStats::of(stats.decision_ms);
+  if (slam) {
+    result.slam_update = TimingStats::of(slam->updateTimes_ms());
+    SlamResult s;
+    s.mode = config.slam.mode;
+    s.error = trajectoryError(result.trajectory);
+    s.map_precision = mapPrecision(grid, world);
+    s.diverged = s.error.rmse_m > config.slam.diverged_ate_m;
+    result.slam = s;
+  }
   result.map = growing ? std::move(published) : std::move(grid);
   result.wall_time_s = std::chrono::duration<double>(Clock::now() - wall_start).count();
   return result;

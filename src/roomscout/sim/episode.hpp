@@ -18,7 +18,10 @@
 #include "roomscout/sim/episode_observer.hpp"
 #include "roomscout/sim/laser_simulator.hpp"
 #include "roomscout/sim/robot.hpp"
+#include "roomscout/sim/sensor_noise.hpp"
+#include "roomscout/sim/slam_metrics.hpp"
 #include "roomscout/sim/world_model.hpp"
+#include "roomscout/slam/slam.hpp"
 
 namespace roomscout::sim {
 
@@ -56,6 +59,12 @@ struct EpisodeConfig {
   OccupancyGridOptions mapping;
   PathFollowerOptions follower;
   EpisodeOptions episode;
+  /// Sensor and odometry noise. Without SLAM the robot is told its true pose and only the
+  /// range noise matters.
+  NoiseOptions noise;
+  /// SLAM in the loop: with a mode other than none, the robot moves in the true world while
+  /// the Explorer, the follower and the point cloud's keyframes use MRPT's map and estimate.
+  roomscout::slam::SlamOptions slam;
   /// Costmap, planner, watchdogs, rooms and skeleton graph. Its stall threshold is 0 here:
   /// explorerOptionsFor() makes it 0.1 % of the world's reachable floor unless a config sets it.
   ExplorerOptions explorer = [] {
@@ -87,13 +96,17 @@ struct CurveSample {
   double rate = 0.0;
 };
 
-struct TrajectorySample {
-  double time_s = 0.0;
-  Pose2 pose;
+/// How SLAM did, against the truth.
+struct SlamResult {
+  std::string mode;            ///< slam.mode
+  TrajectoryError error;       ///< over the trajectory (one pose per scan)
+  double map_precision = 1.0;  ///< see mapPrecision()
+  bool diverged = false;       ///< error.rmse_m above slam.diverged_ate_m: the run does not count
 };
 
 struct EpisodeResult {
-  double exploration_rate = 0.0;   ///< final, in [0, 1]
+  double exploration_rate = 0.0;   ///< final, in [0, 1] (with SLAM, of the SLAM map as it lies
+                                   ///< in the world frame: drift lowers it)
   std::optional<double> t98_s;     ///< first time the rate reached completion_rate
   std::optional<double> l98_m;     ///< distance driven by then
   std::optional<double> t_done_s;  ///< when the strategy declared the end
@@ -118,9 +131,11 @@ struct EpisodeResult {
   TimingStats occupancy_update;    ///< per scan: ray tracing into the grid
   TimingStats costmap_update;      ///< per decision
   TimingStats decision;            ///< strategy decide() per call
+  TimingStats slam_update;         ///< per scan: the SLAM update (with SLAM only)
   std::map<std::string, TimingStats> map_updates;  ///< per observer, by its name()
   std::vector<CurveSample> curve;
-  std::vector<TrajectorySample> trajectory;
+  std::vector<TrajectorySample> trajectory;  ///< one per scan
+  std::optional<SlamResult> slam;            ///< with SLAM only
   OccupancyGrid map;               ///< the final map as the Explorer saw it (growing: cropped)
 };
 

@@ -4,6 +4,7 @@
 // observer each simulation step; an observer decides when to update (its own period), times
 // its updates, and keeps its map for the caller to write.
 
+#include <optional>
 #include <string_view>
 #include <vector>
 
@@ -17,10 +18,13 @@ class WorldModel;
 /// What an observer may look at after one simulation step.
 struct EpisodeSnapshot {
   double time_s = 0.0;
-  Pose2 robot;
+  Pose2 robot;                ///< true pose: where simulated sensors see from
   const OccupancyGrid& grid;
   const WorldModel& world;    ///< ground truth: for simulated sensors only, never for maps
   bool grid_changed = false;  ///< a laser scan was integrated in this step
+  std::optional<Pose2> estimate;  ///< the robot's own estimate, when it differs from the truth
+  /// The pose maps are built at: the estimate, or the true pose when the robot is told it.
+  const Pose2& believed() const { return estimate ? *estimate : robot; }
 };
 
 /// A map builder attached to an episode. Call order: onStep() once per step (after mapping,

@@ -13,7 +13,6 @@ void LaserOptions::validate() const {
     throw OptionError("laser: need 0 <= range_min_m < range_max_m");
   }
   if (!(rate_hz > 0.0)) throw OptionError("laser.rate_hz must be > 0");
-  if (!(range_noise_m >= 0.0)) throw OptionError("laser.range_noise_m must be >= 0");
 }
 
 std::vector<ParameterRef> LaserOptions::parameters() {
@@ -22,13 +21,14 @@ std::vector<ParameterRef> LaserOptions::parameters() {
       {"range_min_m", &range_min_m, "minimum range [m]"},
       {"range_max_m", &range_max_m, "maximum range [m]"},
       {"rate_hz", &rate_hz, "scans per second"},
-      {"range_noise_m", &range_noise_m, "standard deviation of Gaussian range noise [m]"},
   };
 }
 
-LaserSimulator::LaserSimulator(const WorldModel& world, const LaserOptions& options, std::uint64_t seed)
-    : world_(world), options_(options), rng_(seed) {
+LaserSimulator::LaserSimulator(const WorldModel& world, const LaserOptions& options, std::uint64_t seed,
+                               const RangeNoise& noise)
+    : world_(world), options_(options), noise_(noise), rng_(seed) {
   options_.validate();
+  noise_.validate();
 }
 
 double LaserSimulator::castRay(const Vec2& origin_m, double angle_rad, double max_m) const {
@@ -75,13 +75,22 @@ LaserScan LaserSimulator::scan(const Pose2& T_map_sensor) {
   scan.range_min_m = options_.range_min_m;
   scan.range_max_m = options_.range_max_m;
   scan.ranges_m.resize(options_.num_beams);
-  std::normal_distribution<double> noise(0.0, options_.range_noise_m);
+  const bool noisy = !noise_.none();
+  std::normal_distribution<double> gauss(0.0, 1.0);
+  std::bernoulli_distribution dropout(noise_.dropout_probability);
   const Vec2 origin = T_map_sensor.position();
   const float inf = std::numeric_limits<float>::infinity();
   for (int i = 0; i < options_.num_beams; ++i) {
     const double angle = T_map_sensor.yaw_rad + scan.angle_min_rad + i * scan.angle_increment_rad;
     double r = castRay(origin, angle, options_.range_max_m);
-    if (std::isfinite(r) && options_.range_noise_m > 0.0) r = std::max(0.0, r + noise(rng_));
+    if (std::isfinite(r) && noisy) {
+      if (noise_.dropout_probability > 0.0 && dropout(rng_)) {
+        scan.ranges_m[i] = 0.0f;  // a lost return: the LDS-01 reports 0 for an invalid reading
+        continue;
+      }
+      const double sd_m = noise_.sd_m(r);
+      if (sd_m > 0.0) r = std::max(0.0, r + sd_m * gauss(rng_));
+    }
     if (!std::isfinite(r) || r > options_.range_max_m) {
       scan.ranges_m[i] = inf;
     } else if (r < options_.range_min_m) {

@@ -28,7 +28,6 @@ void LidarOptions::validate() const {
   }
   if (!(rate_hz > 0.0)) throw OptionError("lidar.rate_hz must be > 0");
   if (!(mount_height_m > 0.0)) throw OptionError("lidar.mount_height_m must be > 0");
-  if (!(range_noise_m >= 0.0)) throw OptionError("lidar.range_noise_m must be >= 0");
 }
 
 std::vector<ParameterRef> LidarOptions::parameters() {
@@ -41,13 +40,14 @@ std::vector<ParameterRef> LidarOptions::parameters() {
       {"range_max_m", &range_max_m, "maximum range [m]"},
       {"rate_hz", &rate_hz, "revolutions per second"},
       {"mount_height_m", &mount_height_m, "sensor height above the floor [m]"},
-      {"range_noise_m", &range_noise_m, "standard deviation of Gaussian range noise [m]"},
   };
 }
 
-LidarSimulator::LidarSimulator(const ColumnWorld& world, const LidarOptions& options, std::uint64_t seed)
-    : world_(world), options_(options), rng_(seed) {
+LidarSimulator::LidarSimulator(const ColumnWorld& world, const LidarOptions& options, std::uint64_t seed,
+                               const RangeNoise& noise)
+    : world_(world), options_(options), noise_(noise), rng_(seed) {
   options_.validate();
+  noise_.validate();
   const double deg = M_PI / 180.0;
   for (int k = 0; k < options_.num_rings; ++k) {
     const double e = options_.num_rings == 1
@@ -357,8 +357,9 @@ LidarScan LidarSimulator::scan(const Pose2& T_map_robot) {
   std::vector<LidarSurface> surface(n);
   const double cy = std::cos(T_map_robot.yaw_rad), sy = std::sin(T_map_robot.yaw_rad);
   const Eigen::Vector2d origin(T_map_robot.x_m, T_map_robot.y_m);
-  std::normal_distribution<double> noise(0.0, options_.range_noise_m);
-  const bool noisy = options_.range_noise_m > 0.0;
+  const bool noisy = !noise_.none();
+  std::normal_distribution<double> gauss(0.0, 1.0);
+  std::bernoulli_distribution dropout(noise_.dropout_probability);
   scan.points_sensor.reserve(static_cast<std::size_t>(columns()) * n);
   scan.surfaces.reserve(scan.points_sensor.capacity());
   for (int c = 0; c < columns(); ++c) {
@@ -368,7 +369,12 @@ LidarScan LidarSimulator::scan(const Pose2& T_map_robot) {
     for (int k = 0; k < n; ++k) {
       if (t[k] < 0.0) continue;
       const double r_true = t[k] / rings[k].cos_elev;
-      const double r = noisy ? r_true + noise(rng_) : r_true;
+      double r = r_true;
+      if (noisy) {
+        if (noise_.dropout_probability > 0.0 && dropout(rng_)) continue;  // a lost return: no point
+        const double sd_m = noise_.sd_m(r_true);
+        if (sd_m > 0.0) r += sd_m * gauss(rng_);
+      }
       if (r < options_.range_min_m || r > options_.range_max_m) continue;
       const double scale = r_true > 0.0 ? r / r_true : 0.0;  // noise moves the point along its beam
       scan.points_sensor.emplace_back(static_cast<float>(scale * t[k] * ca), static_cast<float>(scale * t[k] * sa),

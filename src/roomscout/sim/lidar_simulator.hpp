@@ -6,7 +6,7 @@
 // columns, reads the spans of the common kinds of column (a wall, a table) from a small
 // table instead of the column, and skips cells and rings whose heights cannot meet a solid
 // span, with the same arithmetic as a cell-by-cell walk, so the hits are bit for bit those
-// of the plain walk.
+// of the plain walk. Optional range noise and dropouts (RangeNoise).
 
 #include <cstdint>
 #include <optional>
@@ -19,6 +19,7 @@
 #include "roomscout/core/geometry.hpp"
 #include "roomscout/core/parameters.hpp"
 #include "roomscout/sim/column_world.hpp"
+#include "roomscout/sim/sensor_noise.hpp"
 
 namespace roomscout::sim {
 
@@ -31,8 +32,6 @@ struct LidarOptions {
   double range_max_m = 100.0;        ///< no return beyond [m]
   double rate_hz = 10.0;             ///< revolutions per second
   double mount_height_m = 0.5;       ///< sensor origin above the floor, on the robot's centre [m]
-  double range_noise_m = 0.0;        ///< standard deviation of Gaussian range noise [m]
-                                     ///< (VLP-16 datasheet: +-0.03 m typical)
   void validate() const;
   std::vector<ParameterRef> parameters();
 };
@@ -54,19 +53,24 @@ struct LidarHit {
 };
 
 /// Casts one revolution at a time, ignoring motion during the revolution. Deterministic for a
-/// given seed and call sequence. Not thread-safe (the noise generator has state).
+/// given seed and call sequence; with noise.none() it draws nothing from its generator. Not
+/// thread-safe (the noise generator has state).
 class LidarSimulator {
  public:
-  /// `world` must outlive the simulator.
-  LidarSimulator(const ColumnWorld& world, const LidarOptions& options, std::uint64_t seed);
+  /// `world` must outlive the simulator. Throws OptionError for bad options and
+  /// InvalidArgument for a noise that fails RangeNoise::validate().
+  LidarSimulator(const ColumnWorld& world, const LidarOptions& options, std::uint64_t seed,
+                 const RangeNoise& noise = {});
 
   const LidarOptions& options() const { return options_; }
+  const RangeNoise& noise() const { return noise_; }
   int columns() const { return static_cast<int>(cos_azimuth_.size()); }
 
   /// The sensor pose of a robot pose: mount_height_m above it, same heading.
   Eigen::Isometry3d sensorPose(const Pose2& T_map_robot) const;
 
-  /// A full revolution from the robot pose. Beams without a return within range are omitted.
+  /// A full revolution from the robot pose. Beams without a return within range and lost
+  /// returns (noise dropouts) are omitted; noise moves a point along its beam.
   LidarScan scan(const Pose2& T_map_robot);
 
   /// The first surface along one beam from origin_map [m] with the given map-frame azimuth
@@ -94,6 +98,7 @@ class LidarSimulator {
 
   const ColumnWorld& world_;
   LidarOptions options_;
+  RangeNoise noise_;
   std::vector<double> elevations_rad_;
   std::vector<double> cos_azimuth_, sin_azimuth_;  ///< per column, sensor frame
   /// Per raster cell: the kind of a non-empty column (an index into kind_offsets_, or

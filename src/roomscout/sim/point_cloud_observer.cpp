@@ -23,7 +23,7 @@ PointCloudObserver::PointCloudObserver(const WorldModel& world, const PointCloud
     : options_(options),
       worker_(worker != nullptr && worker->background() ? worker : nullptr),
       columns_(std::make_unique<ColumnWorld>(world)),
-      lidar_(*columns_, options.lidar, seed),
+      lidar_(*columns_, options.lidar, seed, options.lidar_noise),
       keyframes_(options.keyframes),
       map_(options.map) {
   options_.validate();
@@ -38,11 +38,12 @@ void PointCloudObserver::onStep(const EpisodeSnapshot& snapshot) {
   next_scan_s_ += 1.0 / options_.lidar.rate_hz;
   ++scans_;
   // The keyframe rule needs only the pose, so revolutions that are not keyframes are not cast.
-  if (!keyframes_.accept(snapshot.robot)) return;
+  // Keyframes are chosen, and revolutions placed, at the pose the robot believes it has.
+  if (!keyframes_.accept(snapshot.believed())) return;
   if (worker_ != nullptr) {
-    worker_->post([this, pose = snapshot.robot] { insertScan(pose); });
+    worker_->post([this, truth = snapshot.robot, believed = snapshot.believed()] { insertScan(truth, believed); });
   } else {
-    insertScan(snapshot.robot);
+    insertScan(snapshot.robot, snapshot.believed());
   }
 }
 
@@ -50,10 +51,23 @@ void PointCloudObserver::onFinish(const EpisodeSnapshot&) {
   if (worker_ != nullptr) worker_->drain();
 }
 
-void PointCloudObserver::insertScan(const Pose2& T_map_robot) {
+namespace {
+
+Eigen::Isometry3d planar(const Pose2& p) {
+  Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+  T.translate(Eigen::Vector3d(p.x_m, p.y_m, 0.0));
+  T.rotate(Eigen::AngleAxisd(p.yaw_rad, Eigen::Vector3d::UnitZ()));
+  return T;
+}
+
+}  // namespace
+
+void PointCloudObserver::insertScan(const Pose2& truth, const Pose2& believed) {
   const auto start = std::chrono::steady_clock::now();
-  const LidarScan scan = lidar_.scan(T_map_robot);
-  const Eigen::Affine3f T_map_sensor = Eigen::Affine3f(scan.T_map_sensor.matrix().cast<float>());
+  const LidarScan scan = lidar_.scan(truth);
+  // The sensor's mounting on the robot, carried onto the believed pose.
+  const Eigen::Isometry3d T_robot_sensor = planar(truth).inverse() * scan.T_map_sensor;
+  const Eigen::Affine3f T_map_sensor = Eigen::Affine3f((planar(believed) * T_robot_sensor).matrix().cast<float>());
   points_map_.clear();
   points_map_.reserve(scan.points_sensor.size());
   for (std::size_t i = 0; i < scan.points_sensor.size(); ++i) {

@@ -15,6 +15,7 @@
 #include "roomscout/sim/column_world.hpp"
 #include "roomscout/sim/episode_observer.hpp"
 #include "roomscout/sim/lidar_simulator.hpp"
+#include "roomscout/sim/sensor_noise.hpp"
 #include "roomscout/explorer/map_worker.hpp"
 
 namespace roomscout::sim {
@@ -25,6 +26,8 @@ struct PointCloudObserverOptions {
   KeyframeOptions keyframes;
   bool remove_floor_ceiling = false;  ///< drop returns from the floor and ceiling planes
                                       ///< (default keeps them, as in LIO-SAM's map)
+  RangeNoise lidar_noise;             ///< the lidar's range noise: noise.profile's, set by the
+                                      ///< caller (not a YAML key of its own)
   void validate() const;
   /// Groups "lidar", "pointcloud" (map options and remove_floor_ceiling) and "keyframes".
   std::vector<ParameterGroup> groups();
@@ -54,7 +57,8 @@ class PointCloudObserver final : public EpisodeObserver {
   std::string description() const;
 
  private:
-  void insertScan(const Pose2& T_map_robot);
+  /// Casts a revolution from the true pose and inserts it at the believed one.
+  void insertScan(const Pose2& truth, const Pose2& believed);
 
   PointCloudObserverOptions options_;
   MapWorker* worker_;  ///< null unless it has a thread: a worker without one changes nothing

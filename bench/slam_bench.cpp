@@ -1,0 +1,84 @@
+// SLAM in the loop: the cost of one SLAM update per scan (MRPT's ICP-SLAM and particle-filter
+// SLAM) on a recorded drive through the small house, and a whole large_office episode with
+// TurtleBot3 noise and ICP-SLAM.
+
+#include <benchmark/benchmark.h>
+
+#include "roomscout/exploration/strategy_registry.hpp"
+#include "roomscout/io/builtin_worlds.hpp"
+#include "roomscout/sim/episode.hpp"
+#include "roomscout/sim/laser_simulator.hpp"
+#include "roomscout/sim/sensor_noise.hpp"
+#include "roomscout/slam/slam.hpp"
+
+namespace roomscout {
+namespace {
+
+struct Drive {
+  Pose2 start;
+  std::vector<LaserScan> scans;
+  std::vector<Pose2> odometry;  ///< where the robot's odometry put it at each scan
+};
+
+/// The scans and odometry of a nearest_frontier exploration of small_house (seed 1), with the
+/// tb3 profile's laser and odometry noise.
+const Drive& smallHouseDrive() {
+  static const Drive drive = [] {
+    const sim::WorldModel model(io::loadBuiltinWorld("small_house"));
+    sim::EpisodeConfig config;
+    auto strategy = createStrategy("nearest_frontier", 1);
+    const sim::EpisodeResult r = sim::runEpisode(model, config, *strategy, 1);
+    const sim::NoiseProfile noise = sim::NoiseProfile::named("tb3");
+    sim::LaserSimulator laser(model, config.laser, 1, noise.laser);
+    Drive d;
+    d.start = model.start();
+    sim::OdometrySimulator odometry(noise.odometry, d.start, 2);
+    Pose2 last = d.start;
+    for (const sim::TrajectorySample& s : r.trajectory) {
+      odometry.step(last, s.pose);
+      last = s.pose;
+      d.scans.push_back(laser.scan(s.pose));
+      d.odometry.push_back(odometry.pose());
+    }
+    return d;
+  }();
+  return drive;
+}
+
+void BM_SlamUpdate(benchmark::State& state, const char* mode) {
+  const Drive& drive = smallHouseDrive();
+  const std::size_t n = static_cast<std::size_t>(state.range(0));
+  sim::TimingStats stats;
+  for (auto _ : state) {
+    slam::SlamOptions options;
+    options.mode = mode;
+    slam::Slam slam(options, drive.start, 1);
+    for (std::size_t i = 0; i < n && i < drive.scans.size(); ++i) slam.update(drive.scans[i], drive.odometry[i]);
+    stats = sim::TimingStats::of(slam.updateTimes_ms());
+  }
+  state.counters["scans"] = static_cast<double>(stats.count);
+  state.counters["median_ms"] = stats.median_ms;
+  state.counters["p95_ms"] = stats.p95_ms;
+}
+BENCHMARK_CAPTURE(BM_SlamUpdate, icp, "icp")->Arg(100000)->Unit(benchmark::kSecond)->Iterations(1);
+BENCHMARK_CAPTURE(BM_SlamUpdate, rbpf, "rbpf")->Arg(1500)->Unit(benchmark::kSecond)->Iterations(1);
+
+void BM_ExploreLargeOfficeWithTb3NoiseAndIcpSlam(benchmark::State& state) {
+  const sim::WorldModel model(io::loadBuiltinWorld("large_office"));
+  sim::EpisodeResult r;
+  for (auto _ : state) {
+    sim::EpisodeConfig config;
+    config.noise.profile = "tb3";
+    config.slam.mode = "icp";
+    auto strategy = createStrategy("semantic", 1);
+    r = sim::runEpisode(model, config, *strategy, 1);
+  }
+  state.counters["rate"] = r.exploration_rate;
+  state.counters["sim_time_s"] = r.sim_time_s;
+  state.counters["ate_rmse_m"] = r.slam ? r.slam->error.rmse_m : 0.0;
+  state.counters["slam_p95_ms"] = r.slam_update.p95_ms;
+}
+BENCHMARK(BM_ExploreLargeOfficeWithTb3NoiseAndIcpSlam)->Unit(benchmark::kSecond)->Iterations(1);
+
+}  // namespace
+}  // namespace roomscout

@@ -1,0 +1,251 @@
+#include "roomscout/slam/slam.hpp"
+
+#include <mrpt/bayes/CParticleFilter.h>
+#include <mrpt/maps/CMultiMetricMap.h>
+#include <mrpt/maps/CSimpleMap.h>
+#include <mrpt/maps/CSimplePointsMap.h>
+#include <mrpt/obs/CActionCollection.h>
+#include <mrpt/obs/CActionRobotMovement2D.h>
+#include <mrpt/obs/CObservation2DRangeScan.h>
+#include <mrpt/obs/CSensoryFrame.h>
+#include <mrpt/poses/CPose2D.h>
+#include <mrpt/poses/CPosePDFGaussian.h>
+#include <mrpt/random/RandomGenerators.h>
+#include <mrpt/slam/CMetricMapBuilderICP.h>
+#include <mrpt/slam/CMetricMapBuilderRBPF.h>
+
+#include <chrono>
+#include <cmath>
+#include <exception>
+#include <mutex>
+#include <optional>
+
+#include "roomscout/core/errors.hpp"
+
+namespace roomscout::slam {
+
+SlamMode SlamOptions::slamMode() const {
+  if (mode == "none") return SlamMode::kNone;
+  if (mode == "icp") return SlamMode::kIcp;
+  if (mode == "rbpf") return SlamMode::kRbpf;
+  throw OptionError("slam.mode must be none, icp or rbpf, not \"" + mode + "\"");
+}
+
+void SlamOptions::validate() const {
+  slamMode();
+  auto positive = [](double v) { return std::isfinite(v) && v > 0.0; };
+  if (!positive(match_distance_m)) throw OptionError("slam.match_distance_m must be > 0");
+  if (!positive(match_angle_deg)) throw OptionError("slam.match_angle_deg must be > 0");
+  if (!positive(insert_distance_m)) throw OptionError("slam.insert_distance_m must be > 0");
+  if (!positive(insert_angle_deg)) throw OptionError("slam.insert_angle_deg must be > 0");
+  if (particles < 1 || particles > 1000) throw OptionError("slam.particles must be in [1, 1000]");
+  if (!positive(diverged_ate_m)) throw OptionError("slam.diverged_ate_m must be > 0");
+}
+
+std::vector<ParameterRef> SlamOptions::parameters() {
+  return {
+      {"mode", &mode, "none (the true pose), icp (MRPT ICP-SLAM) or rbpf (MRPT particle-filter SLAM)"},
+      {"match_distance_m", &match_distance_m, "distance driven before SLAM corrects the pose with a scan [m]"},
+      {"match_angle_deg", &match_angle_deg, "angle turned before SLAM corrects the pose with a scan [deg]"},
+      {"insert_distance_m", &insert_distance_m, "distance driven before a scan is added to the map [m]"},
+      {"insert_angle_deg", &insert_angle_deg, "angle turned before a scan is added to the map [deg]"},
+      {"particles", &particles, "rbpf: number of particles"},
+      {"diverged_ate_m", &diverged_ate_m, "position RMSE above which a run is marked diverged [m]"},
+  };
+}
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+/// MRPT's particle filter draws from one process-wide generator: rbpf sessions take turns and
+/// reseed it from their own seed, so that each run is repeatable whatever else runs.
+std::mutex& mrptRandomMutex() {
+  static std::mutex m;
+  return m;
+}
+
+mrpt::poses::CPose2D toMrpt(const Pose2& p) { return {p.x_m, p.y_m, p.yaw_rad}; }
+
+/// a then b, b expressed in a's frame.
+Pose2 compose(const Pose2& a, const Pose2& b) {
+  const double c = std::cos(a.yaw_rad), s = std::sin(a.yaw_rad);
+  return {a.x_m + c * b.x_m - s * b.y_m, a.y_m + s * b.x_m + c * b.y_m, wrapAngle(a.yaw_rad + b.yaw_rad)};
+}
+
+Pose2 inverse(const Pose2& a) {
+  const double c = std::cos(a.yaw_rad), s = std::sin(a.yaw_rad);
+  return {-c * a.x_m - s * a.y_m, s * a.x_m - c * a.y_m, wrapAngle(-a.yaw_rad)};
+}
+
+}  // namespace
+
+struct Slam::Impl {
+  SlamOptions options;
+  SlamMode mode = SlamMode::kNone;
+  std::uint64_t seed = 0;
+  std::uint64_t updates = 0;
+  std::unique_ptr<mrpt::slam::CMetricMapBuilder> builder;
+  std::optional<Pose2> last_odometry;
+  Pose2 map_from_odom;  ///< the last estimate composed with its odometry's inverse
+  std::vector<double> update_ms;
+  /// Time stamps: MRPT's ICP-SLAM stamps the start pose with the wall clock and trusts odometry
+  /// only when it is newer, so updates are stamped after it at a fixed interval (their values
+  /// matter only in that order: no velocities are given, so nothing is extrapolated).
+  mrpt::Clock::time_point stamp_base;
+
+  /// The laser points new scans are aligned with: 5 cm apart at least, a new point fused with
+  /// an old one it falls on, so that the map and the cost of matching grow with the area seen
+  /// rather than with the distance driven.
+  static mrpt::maps::CSimplePointsMap::TMapDefinition pointsDefinition() {
+    mrpt::maps::CSimplePointsMap::TMapDefinition def;
+    def.insertionOpts.minDistBetweenLaserPoints = 0.05f;
+    def.insertionOpts.isPlanarMap = true;
+    def.insertionOpts.fuseWithExisting = true;
+    return def;
+  }
+
+  void configureIcp(mrpt::slam::CICP::TConfigParams& icp) const {
+    // MRPT's demo values for laser ICP-SLAM (icp-slam_demo_classic.ini), but pairs at most
+    // 15 cm apart: the scans are matched every few centimetres of odometry, and a wider
+    // window pairs the two faces of a thin wall seen from either side.
+    icp.maxIterations = 60;
+    icp.thresholdDist = 0.15;
+    icp.thresholdAng = 1.0 * M_PI / 180.0;
+    icp.ALFA = 0.5;
+    icp.smallestThresholdDist = 0.03;
+    icp.corresponding_points_decimation = 3;
+  }
+
+};
+
+Slam::Slam(const SlamOptions& options, const Pose2& start, std::uint64_t seed)
+    : impl_(std::make_unique<Impl>()) {
+  options.validate();
+  Impl& s = *impl_;
+  s.options = options;
+  s.mode = options.slamMode();
+  if (s.mode == SlamMode::kNone) throw OptionError("slam.mode is none: there is no SLAM to run");
+  if (!std::isfinite(start.x_m) || !std::isfinite(start.y_m) || !std::isfinite(start.yaw_rad)) {
+    throw InvalidArgument("SLAM: the start pose is not finite");
+  }
+  s.seed = seed;
+
+  const mrpt::poses::CPosePDFGaussian x0(toMrpt(start));
+  const double deg = M_PI / 180.0;
+  try {
+    if (s.mode == SlamMode::kIcp) {
+      auto icp = std::make_unique<mrpt::slam::CMetricMapBuilderICP>();
+      icp->setVerbosityLevel(mrpt::system::LVL_ERROR);
+      auto& o = icp->ICP_options;
+      o.matchAgainstTheGrid = false;
+      o.insertionLinDistance = options.insert_distance_m;
+      o.insertionAngDistance = options.insert_angle_deg * deg;
+      o.localizationLinDistance = options.match_distance_m;
+      o.localizationAngDistance = options.match_angle_deg * deg;
+      o.minICPgoodnessToAccept = 0.2;  // noisy scans pair fewer points within 15 cm
+      o.mapInitializers.clear();
+      o.mapInitializers.push_back(Impl::pointsDefinition());
+      s.configureIcp(icp->ICP_params);
+      icp->initialize(mrpt::maps::CSimpleMap(), &x0);
+      s.builder = std::move(icp);
+    } else {
+      mrpt::slam::CMetricMapBuilderRBPF::TConstructionOptions c;
+      c.insertionLinDistance = static_cast<float>(options.insert_distance_m);
+      c.insertionAngDistance = static_cast<float>(options.insert_angle_deg * deg);
+      c.localizeLinDistance = static_cast<float>(options.match_distance_m);
+      c.localizeAngDistance = static_cast<float>(options.match_angle_deg * deg);
+      c.PF_options.PF_algorithm = mrpt::bayes::CParticleFilter::pfOptimalProposal;
+      c.PF_options.resamplingMethod = mrpt::bayes::CParticleFilter::prMultinomial;
+      c.PF_options.adaptiveSampleSize = false;
+      c.PF_options.sampleSize = static_cast<unsigned>(options.particles);
+      c.PF_options.BETA = 0.5;
+      c.mapsInitializers.clear();
+      auto points = Impl::pointsDefinition();
+      points.likelihoodOpts.sigma_dist = 0.1;  // a point's likelihood falls off over 10 cm
+      c.mapsInitializers.push_back(points);
+      c.predictionOptions.pfOptimalProposal_mapSelection = 3;  // ICP against each particle's points
+      s.configureIcp(c.predictionOptions.icp_params);
+      c.verbosity_level = mrpt::system::LVL_ERROR;
+      std::lock_guard lock(mrptRandomMutex());
+      mrpt::random::getRandomGenerator().randomize(static_cast<uint32_t>(seed ^ (seed >> 32)));
+      auto rbpf = std::make_unique<mrpt::slam::CMetricMapBuilderRBPF>(c);
+      rbpf->setVerbosityLevel(mrpt::system::LVL_ERROR);
+      rbpf->initialize(mrpt::maps::CSimpleMap(), &x0);
+      s.builder = std::move(rbpf);
+    }
+    s.stamp_base = mrpt::Clock::now() + std::chrono::seconds(1);
+  } catch (const std::exception& e) {
+    throw InvalidArgument(std::string("SLAM (") + options.mode + "): MRPT failed to initialise: " + e.what());
+  }
+}
+
+Slam::~Slam() = default;
+
+void Slam::update(const LaserScan& scan, const Pose2& odometry) {
+  Impl& s = *impl_;
+  const auto t0 = Clock::now();
+  const std::size_t n = scan.ranges_m.size();
+  if (n < 2 || !(scan.angle_increment_rad > 0.0)) {
+    throw InvalidArgument("SLAM: a scan needs at least two beams and a positive angle increment");
+  }
+  if (!std::isfinite(odometry.x_m) || !std::isfinite(odometry.y_m) || !std::isfinite(odometry.yaw_rad)) {
+    throw InvalidArgument("SLAM: the odometry pose is not finite");
+  }
+
+  // The odometry increment since the previous scan, with MRPT's default Gaussian motion model.
+  const Pose2 increment = s.last_odometry ? compose(inverse(*s.last_odometry), odometry) : Pose2{};
+  s.last_odometry = odometry;
+  const auto stamp = s.stamp_base + std::chrono::milliseconds(200 * s.updates);
+  mrpt::obs::CActionRobotMovement2D movement;
+  movement.computeFromOdometry(toMrpt(increment), mrpt::obs::CActionRobotMovement2D::TMotionModelOptions());
+  movement.timestamp = stamp;
+  mrpt::obs::CActionCollection actions;
+  actions.insert(movement);
+
+  // The scan: MRPT spreads N beams evenly over its aperture, centred on the sensor's heading.
+  auto obs = mrpt::obs::CObservation2DRangeScan::Create();
+  obs->resizeScan(n);
+  obs->aperture = static_cast<float>(scan.angle_increment_rad * static_cast<double>(n - 1));
+  obs->rightToLeft = true;
+  obs->maxRange = static_cast<float>(scan.range_max_m);
+  obs->sensorPose = mrpt::poses::CPose3D(0, 0, 0, scan.angle_min_rad + 0.5 * obs->aperture, 0, 0);
+  obs->sensorLabel = "LASER";
+  obs->timestamp = stamp;
+  for (std::size_t i = 0; i < n; ++i) {
+    const float r = scan.ranges_m[i];
+    const bool valid = std::isfinite(r) && r >= scan.range_min_m && r <= scan.range_max_m;
+    // No return, too close or dropped: not a point to match.
+    obs->setScanRange(i, valid ? r : 0.0f);
+    obs->setScanRangeValidity(i, valid);
+  }
+  mrpt::obs::CSensoryFrame frame;
+  frame.insert(obs);
+
+  try {
+    if (s.mode == SlamMode::kRbpf) {
+      std::lock_guard lock(mrptRandomMutex());
+      const std::uint64_t draw = s.seed * 0x9E3779B97F4A7C15ull + s.updates;
+      mrpt::random::getRandomGenerator().randomize(static_cast<uint32_t>(draw ^ (draw >> 32)));
+      s.builder->processActionObservation(actions, frame);
+    } else {
+      s.builder->processActionObservation(actions, frame);
+    }
+    ++s.updates;
+    const mrpt::math::TPose3D estimate = s.builder->getCurrentPoseEstimation()->getMeanVal().asTPose();
+    s.map_from_odom = compose(Pose2{estimate.x, estimate.y, estimate.yaw}, inverse(odometry));
+  } catch (const InvalidArgument&) {
+    throw;
+  } catch (const std::exception& e) {
+    throw InvalidArgument(std::string("SLAM (") + s.options.mode + "): MRPT failed: " + e.what());
+  }
+  s.update_ms.push_back(std::chrono::duration<double, std::milli>(Clock::now() - t0).count());
+}
+
+Pose2 Slam::pose(const Pose2& odometry) const { return compose(impl_->map_from_odom, odometry); }
+
+SlamMode Slam::mode() const { return impl_->mode; }
+
+const std::vector<double>& Slam::updateTimes_ms() const { return impl_->update_ms; }
+
+}  // namespace roomscout::slam
