@@ -1,5 +1,6 @@
 // Report tables from a small hand-written results file (data/results_small.jsonl): the
 // numbers in the tables are the means, sample standard deviations and counts of its records.
+// Table IV from hand-written records of the same episodes without and with noise and SLAM.
 
 #include "roomscout/experiment/report.hpp"
 
@@ -11,8 +12,10 @@
 #include <random>
 #include <sstream>
 
+#include "../io/test_support.hpp"
 #include "roomscout/core/errors.hpp"
 #include "roomscout/experiment/paper_reference.hpp"
+#include "roomscout/experiment/report_writer.hpp"
 
 namespace roomscout::experiment {
 namespace {
@@ -188,6 +191,218 @@ TEST(Report, MissingInputIsNamed) {
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("nothing_here"), std::string::npos) << e.what();
   }
+}
+
+/// One results record of small_house or medium_house; `extra` is added inside the object.
+std::string record(const char* world, const char* method, int seed, double rate, double t98,
+                   double l98, const std::string& extra = "") {
+  std::ostringstream line;
+  line << R"({"world": ")" << world << R"(", "world_group": "builtin", "method": ")" << method
+       << R"(", "seed": )" << seed << R"(, "exploration_rate": )" << rate << R"(, "t98_s": )" << t98
+       << R"(, "l98_m": )" << l98 << extra << "}\n";
+  return line.str();
+}
+
+const std::string kIcp =
+    R"(, "options": {"robot": {"radius_m": 0.1}, "noise": {"profile": "tb3"}, )"
+    R"("slam": {"mode": "icp", "diverged_ate_m": 1.0}})";
+std::string slamBlock(double ate_m, bool diverged) {
+  return R"(, "slam": {"mode": "icp", "ate_rmse_m": )" + std::to_string(ate_m) +
+         R"(, "ate_max_m": 2.0, "heading_rmse_rad": 0.02, "map_precision": 0.8, "diverged": )" +
+         (diverged ? "true" : "false") + "}";
+}
+
+/// A noise-free bench ("ideal": one old record without the noise and slam options, one with
+/// them "none") and the same episodes under noise tb3 and ICP SLAM ("slam"), each with a
+/// repeated record, and one medium_house episode under noise alone.
+struct TwoSettings {
+  io::test::TempDir dir;
+  std::vector<fs::path> inputs;
+  TwoSettings() {
+    fs::create_directories(dir / "ideal");
+    fs::create_directories(dir / "slam");
+    const std::string none =
+        R"(, "options": {"noise": {"profile": "none"}, "slam": {"mode": "none"}})";
+    dir.write("ideal/results.jsonl",
+              record("small_house", "rrt", 1, 0.99, 100.0, 20.0, R"(, "options": {"robot": {}})") +
+                  record("small_house", "rrt", 2, 0.99, 120.0, 24.0, none) +
+                  record("small_house", "rrt", 2, 0.99, 500.0, 90.0) +  // the same episode again
+                  record("small_house", "mmpf", 1, 0.99, 90.0, 18.0));
+    dir.write(
+        "slam/results.jsonl",
+        record("small_house", "rrt", 1, 0.99, 130.0, 30.0, kIcp + slamBlock(0.1, false)) +
+            record("small_house", "rrt", 2, 0.985, 150.0, 34.0, kIcp + slamBlock(0.3, false)) +
+            // Explored, but its pose estimate drifted past the bound: a failure.
+            record("small_house", "rrt", 3, 0.99, 140.0, 40.0, kIcp + slamBlock(1.5, true)) +
+            record("small_house", "rrt", 1, 0.99, 999.0, 99.0, kIcp + slamBlock(0.1, false)) +
+            record("medium_house", "mmpf", 1, 0.99, 300.0, 80.0,
+                   R"(, "options": {"noise": {"profile": "tb3"}})"));
+    inputs = {dir / "ideal", dir / "slam"};
+  }
+};
+
+TEST(ReportSettings, KeepsTheSameEpisodeUnderEachSettingAndDropsTrueDuplicates) {
+  const TwoSettings data;
+  const ResultSet set = loadResults(data.inputs);
+  EXPECT_EQ(set.duplicates, 2u);
+  ASSERT_EQ(set.episodes.size(), 7u);
+  EXPECT_EQ(set.episodes[0].setting, "");           // no noise or slam options: an older record
+  EXPECT_EQ(set.episodes[1].setting, "");           // both "none"
+  EXPECT_DOUBLE_EQ(*set.episodes[1].t98_s, 120.0);  // the first record of the key is kept
+  EXPECT_EQ(set.episodes[3].key, set.episodes[0].key);
+  EXPECT_EQ(set.episodes[3].setting, "noise tb3, slam icp");
+  EXPECT_DOUBLE_EQ(*set.episodes[3].ate_rmse_m, 0.1);
+  EXPECT_FALSE(set.episodes[3].slam_diverged);
+  EXPECT_DOUBLE_EQ(*set.episodes[3].t98_s, 130.0);
+  EXPECT_TRUE(set.episodes[5].slam_diverged);
+  EXPECT_FALSE(set.episodes[5].succeeded());
+  EXPECT_EQ(set.episodes[6].setting, "noise tb3");
+  EXPECT_FALSE(set.episodes[6].ate_rmse_m.has_value());
+  EXPECT_FALSE(set.episodes[0].ate_rmse_m.has_value());
+}
+
+TEST(ReportSettings, TablesOneToThreeHoldTheMainSettingOnly) {
+  const TwoSettings data;
+  const Report report = buildReport(loadResults(data.inputs));
+  EXPECT_EQ(report.main_setting, "");
+  EXPECT_EQ(report.episodes, 3u);
+  ASSERT_EQ(report.rows.size(), 1u);  // medium_house was run under noise only
+  EXPECT_EQ(report.rows[0].name, "small_house");
+  const MethodStats& rrt = report.table1.at({"small_house", "rrt"});
+  EXPECT_EQ(rrt.episodes, 2u);
+  EXPECT_EQ(rrt.successes, 2u);
+  EXPECT_DOUBLE_EQ(rrt.t98_s.mean, 110.0);
+  EXPECT_DOUBLE_EQ(rrt.l98_m.mean, 22.0);
+  EXPECT_EQ(report.methods, (std::vector<std::string>{"rrt", "mmpf"}));
+  const std::string md = table1Markdown(report);
+  EXPECT_TRUE(contains(md, "| RRT | 110.0 ± 14.1 | 171 | 22.0 ± 2.8 | 31 | 2/2 (100 %) |")) << md;
+  EXPECT_TRUE(contains(md, "3 episodes from `")) << md;
+  EXPECT_TRUE(contains(md,
+                       "`, and 3 episodes under noise tb3, slam icp; 1 episode under noise "
+                       "tb3 (Table IV)."))
+      << md;
+}
+
+TEST(ReportSettings, Table4SetsEachSettingBesideTheMainOne) {
+  const TwoSettings data;
+  const Report report = buildReport(loadResults(data.inputs));
+  ASSERT_TRUE(report.hasTable4());
+  const SettingComparison& t4 = report.table4;
+  EXPECT_EQ(t4.settings, (std::vector<std::string>{"noise tb3, slam icp", "noise tb3"}));
+  EXPECT_EQ(t4.episodes.at("noise tb3, slam icp"), 3u);
+  ASSERT_EQ(t4.rows.size(), 2u);
+  EXPECT_EQ(t4.rows[0].name, "small_house");
+  EXPECT_EQ(t4.rows[1].name, "medium_house");
+  EXPECT_EQ(t4.methods, (std::vector<std::string>{"rrt", "mmpf"}));
+  EXPECT_FALSE(t4.cells.contains({"small_house", "mmpf"}));  // no other setting
+
+  const SettingStats& icp = t4.cells.at({"small_house", "rrt"}).at("noise tb3, slam icp");
+  EXPECT_EQ(icp.episodes, 3u);
+  EXPECT_EQ(icp.successes, 2u);  // the diverged run reached 99 % but does not count
+  EXPECT_EQ(icp.diverged, 1u);
+  EXPECT_DOUBLE_EQ(icp.t98_s.mean, 140.0);  // of the two successes
+  EXPECT_DOUBLE_EQ(icp.l98_m.mean, 32.0);
+  EXPECT_NEAR(icp.ate_rmse_m.mean, 1.9 / 3.0, 1e-12);  // every episode's
+  const SettingStats& ideal = t4.cells.at({"small_house", "rrt"}).at("");
+  EXPECT_EQ(ideal.successes, 2u);
+  EXPECT_DOUBLE_EQ(ideal.l98_m.mean, 22.0);
+
+  const std::string md = slamMarkdown(report);
+  EXPECT_TRUE(contains(md, "# Table IV: exploration under noise and SLAM\n")) << md;
+  EXPECT_TRUE(contains(md,
+                       "| World | Method | noise-free T98 (s) | noise-free L98 (m) | "
+                       "noise-free success | noise tb3, slam icp T98 (s) | noise tb3, slam icp "
+                       "L98 (m) | noise tb3, slam icp success | noise tb3, slam icp ATE (m) | "
+                       "noise tb3, slam icp L98 ratio | noise tb3 T98 (s) |"))
+      << md;
+  EXPECT_TRUE(contains(md,
+                       "| small_house | RRT | 110.0 ± 14.1 | 22.0 ± 2.8 | 2/2 (100 %) | "
+                       "140.0 ± 14.1 | 32.0 ± 2.8 | 2/3 (67 %), 1 diverged | 0.63 ± 0.76 | "
+                       "1.45× | – | – | – | – | – |"))
+      << md;
+  EXPECT_TRUE(contains(md,
+                       "| medium_house | MMPF | – | – | – | – | – | – | – | – | 300.0 | 80.0 "
+                       "| 1/1 (100 %) | – | – |"))
+      << md;
+}
+
+TEST(ReportSettings, Table4IsWrittenAndOnThePageOnlyWhenThereAreOtherSettings) {
+  const TwoSettings data;
+  const ReportOutput output =
+      runReport(data.inputs, data.dir / "rep", ReportSettings{false, true, 1});
+  EXPECT_EQ(output.episodes, 7u);
+  EXPECT_EQ(output.duplicates, 2u);
+  EXPECT_TRUE(fs::exists(data.dir / "rep" / "table4_slam.md"));
+  std::ifstream in(data.dir / "rep" / "report.html");
+  std::stringstream html;
+  html << in.rdbuf();
+  EXPECT_TRUE(contains(html.str(), "Table IV: exploration under noise and SLAM"));
+  EXPECT_TRUE(contains(html.str(), "2/3 (67 %), 1 diverged"));
+
+  const Report plain = buildReport(loadResults({data.dir / "ideal"}));
+  EXPECT_FALSE(plain.hasTable4());
+  EXPECT_FALSE(slamCells(plain).has_value());
+  EXPECT_EQ(slamMarkdown(plain), "");
+  const plots::HtmlPage page = reportPage(plain, {});
+  for (const plots::HtmlSection& section : page.sections)
+    EXPECT_FALSE(contains(section.title, "Table IV")) << section.title;
+  const std::vector<fs::path> files = writeReport(plain, data.dir / "plain");
+  EXPECT_EQ(files.size(), 4u);
+  EXPECT_FALSE(fs::exists(data.dir / "plain" / "table4_slam.md"));
+}
+
+TEST(ReportSettings, OldRecordsAreTheMainSetting) {
+  const ResultSet set = loadResults({kData / "results_small.jsonl"});
+  for (const EpisodeSummary& e : set.episodes) {
+    EXPECT_EQ(e.setting, "") << e.where;
+    EXPECT_FALSE(e.ate_rmse_m.has_value()) << e.where;
+    EXPECT_FALSE(e.slam_diverged) << e.where;
+  }
+  const Report report = buildReport(set);
+  EXPECT_EQ(report.main_setting, "");
+  EXPECT_EQ(report.episodes, 9u);
+  EXPECT_FALSE(report.hasTable4());
+  EXPECT_FALSE(contains(sourcesLine(report), "Table IV")) << sourcesLine(report);
+}
+
+TEST(ReportSettings, WithoutNoiseFreeEpisodesTheFirstSettingIsTheMainOne) {
+  const io::test::TempDir dir;
+  const fs::path file = dir.write(
+      "results.jsonl",
+      record("small_house", "rrt", 1, 0.99, 130.0, 30.0, kIcp + slamBlock(0.1, false)) +
+          record("small_house", "rrt", 2, 0.99, 140.0, 40.0, kIcp + slamBlock(1.5, true)));
+  const Report report = buildReport(loadResults({file}));
+  EXPECT_EQ(report.main_setting, "noise tb3, slam icp");
+  EXPECT_FALSE(report.hasTable4());
+  const MethodStats& rrt = report.table1.at({"small_house", "rrt"});
+  EXPECT_EQ(rrt.episodes, 2u);
+  EXPECT_EQ(rrt.successes, 1u);  // the diverged run is a failure in Table I too
+  EXPECT_TRUE(contains(sourcesLine(report), "2 episodes under noise tb3, slam icp from `"))
+      << sourcesLine(report);
+}
+
+TEST(ReportSettings, BadSlamBlockOrSettingIsNamedWithItsLine) {
+  const io::test::TempDir dir;
+  const auto expectError = [&](const std::string& extra, const std::string& problem) {
+    const fs::path file =
+        dir.write("results.jsonl", record("small_house", "rrt", 1, 0.99, 100.0, 20.0) +
+                                       record("small_house", "rrt", 2, 0.99, 100.0, 20.0, extra));
+    try {
+      loadResults({file});
+      ADD_FAILURE() << extra;
+    } catch (const InputError& e) {
+      EXPECT_TRUE(contains(e.what(), "results.jsonl:2")) << e.what();
+      EXPECT_TRUE(contains(e.what(), problem)) << e.what();
+    }
+  };
+  expectError(kIcp + R"(, "slam": {"mode": "icp", "ate_rmse_m": "0.1", "diverged": false})",
+              "'ate_rmse_m' must be a number");
+  expectError(kIcp + R"(, "slam": {"mode": "icp", "ate_rmse_m": 0.1, "diverged": "no"})",
+              "'diverged' must be true or false");
+  expectError(R"(, "slam": [0.1])", "'slam' must be an object");
+  expectError(R"(, "options": {"noise": {"profile": 2}})",
+              "'options.noise.profile' must be a string");
+  expectError(R"(, "options": {"slam": "icp"})", "'options.slam' must be an object");
 }
 
 }  // namespace

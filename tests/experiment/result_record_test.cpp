@@ -10,7 +10,10 @@ namespace {
 
 RecordedEpisode fakeEpisode() {
   RecordedEpisode e;
-  for (int i = 0; i <= 50; ++i) e.result.trajectory.push_back({0.2 * i, Pose2{0.01 * i, 0.0, 0.0}});
+  for (int i = 0; i <= 50; ++i) {
+    const Pose2 p{0.01 * i, 0.0, 0.0};
+    e.result.trajectory.push_back({0.2 * i, p, p});
+  }
   e.metrics = {{"world", "file_name"},
                {"method", "rrt"},
                {"seed", 3},

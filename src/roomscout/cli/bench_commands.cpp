@@ -69,7 +69,7 @@ std::vector<std::filesystem::path> reportInto(const std::vector<std::filesystem:
   if (report.duplicates > 0) {
     std::fprintf(
         stderr,
-        "roomscout: note: %zu records repeat an earlier (world, method, seed); kept the first\n",
+        "roomscout: note: %zu records repeat an earlier (world, method, seed, setting); kept the first\n",
         report.duplicates);
   }
   if (report.truncated > 0) {

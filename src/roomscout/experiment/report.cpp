@@ -52,6 +52,12 @@ std::string percent(std::size_t part, std::size_t whole) {
 
 std::string ratioText(const Stat& s) { return s.n ? format("%.2f", s.mean) + "×" : "–"; }
 
+/// "successes/episodes (percent %)".
+std::string successText(std::size_t successes, std::size_t episodes) {
+  return std::to_string(successes) + "/" + std::to_string(episodes) + " (" +
+         percent(successes, episodes) + " %)";
+}
+
 /// "# title\n\ndescription\n\nsources.\n\n" + the table in markdown.
 std::string markdownSection(const std::string& heading, const std::string& description,
                             const std::string& sources, const plots::HtmlTable& table) {
@@ -154,6 +160,123 @@ void readWorldAndOptions(const nlohmann::json& record, const std::string& where,
   e.random_start = setup.contains("start");
 }
 
+/// The record's options <group>.<name> (a string); nullopt when the group or key is absent.
+std::optional<std::string> optionText(const nlohmann::json& record, const std::string& group,
+                                      const std::string& name, const std::string& where) {
+  if (!record.contains("options") || !record["options"].is_object()) return std::nullopt;
+  const nlohmann::json& options = record["options"];
+  const auto g = options.find(group);
+  if (g == options.end() || g->is_null()) return std::nullopt;
+  if (!g->is_object()) throw InputError(where, "'options." + group + "' must be an object");
+  const auto v = g->find(name);
+  if (v == g->end() || v->is_null()) return std::nullopt;
+  if (!v->is_string())
+    throw InputError(where, "'options." + group + "." + name + "' must be a string");
+  return v->get<std::string>();
+}
+
+/// The record's `slam` block (ate_rmse_m, diverged), and setting (see EpisodeSummary).
+void readNoiseAndSlam(const nlohmann::json& record, const std::string& where, EpisodeSummary& e) {
+  std::optional<std::string> slam_mode = optionText(record, "slam", "mode", where);
+  const auto block = record.find("slam");
+  if (block != record.end() && !block->is_null()) {
+    if (!block->is_object()) throw InputError(where, "'slam' must be an object or null");
+    const std::string w = where + ": slam";
+    e.ate_rmse_m = optionalNumber(*block, "ate_rmse_m", w);
+    const auto diverged = block->find("diverged");
+    if (diverged != block->end() && !diverged->is_null()) {
+      if (!diverged->is_boolean()) throw InputError(w, "'diverged' must be true or false");
+      e.slam_diverged = diverged->get<bool>();
+    }
+    const auto mode = block->find("mode");
+    if (mode != block->end() && !mode->is_null()) {
+      if (!mode->is_string()) throw InputError(w, "'mode' must be a string");
+      if (!slam_mode) slam_mode = mode->get<std::string>();
+    }
+  }
+  const std::optional<std::string> noise = optionText(record, "noise", "profile", where);
+  std::vector<std::string> parts;
+  if (noise && !noise->empty() && *noise != "none") parts.push_back("noise " + *noise);
+  if (slam_mode && !slam_mode->empty() && *slam_mode != "none")
+    parts.push_back("slam " + *slam_mode);
+  for (std::size_t i = 0; i < parts.size(); ++i) e.setting += (i ? ", " : "") + parts[i];
+}
+
+/// Paper worlds first, then other worlds, then groups.
+void sortRows(std::vector<ReportRow>& rows) {
+  std::sort(rows.begin(), rows.end(), [](const ReportRow& a, const ReportRow& b) {
+    const auto rank = [](const ReportRow& r) { return r.is_group ? 200 : worldRank(r.name); };
+    return std::pair(rank(a), a.name) < std::pair(rank(b), b.name);
+  });
+}
+
+/// Paper order, then others by name.
+std::vector<std::string> sortedMethods(const std::set<std::string>& methods) {
+  std::vector<std::string> sorted(methods.begin(), methods.end());
+  std::sort(sorted.begin(), sorted.end(), [](const std::string& a, const std::string& b) {
+    return std::pair(methodRank(a), a) < std::pair(methodRank(b), b);
+  });
+  return sorted;
+}
+
+/// How a setting is named in Table IV's header.
+std::string settingTitle(const std::string& setting) {
+  return setting.empty() ? "noise-free" : setting;
+}
+
+/// Table IV's numbers of every (row, method) with episodes in a setting other than `main`.
+SettingComparison compareSettings(const std::vector<EpisodeSummary>& episodes,
+                                  const std::string& main) {
+  SettingComparison table;
+  struct Samples {
+    std::size_t episodes = 0, successes = 0, diverged = 0;
+    std::vector<double> t98, l98, ate;
+  };
+  std::map<std::pair<std::string, std::string>, std::map<std::string, Samples>> cells;
+  std::map<std::string, std::pair<bool, std::set<std::string>>> rows;  // name -> (group, worlds)
+  for (const EpisodeSummary& e : episodes) {
+    const std::string row = rowNameOf(e);
+    auto& r = rows[row];
+    r.first = e.world_group != "builtin";
+    r.second.insert(e.key.world);
+    if (e.setting != main) {
+      if (table.episodes[e.setting]++ == 0) table.settings.push_back(e.setting);
+    }
+    Samples& c = cells[{row, e.key.method}][e.setting];
+    ++c.episodes;
+    if (e.slam_diverged) ++c.diverged;
+    if (e.succeeded()) {
+      ++c.successes;
+      if (e.t98_s) c.t98.push_back(*e.t98_s);
+      if (e.l98_m) c.l98.push_back(*e.l98_m);
+    }
+    if (e.ate_rmse_m) c.ate.push_back(*e.ate_rmse_m);
+  }
+  std::set<std::string> row_names, methods;
+  for (const auto& [key, by_setting] : cells) {
+    if (by_setting.size() == 1 && by_setting.begin()->first == main) continue;
+    row_names.insert(key.first);
+    methods.insert(key.second);
+    auto& out = table.cells[key];
+    for (const auto& [setting, c] : by_setting) {
+      SettingStats& s = out[setting];
+      s.episodes = c.episodes;
+      s.successes = c.successes;
+      s.diverged = c.diverged;
+      s.t98_s = Stat::of(c.t98);
+      s.l98_m = Stat::of(c.l98);
+      s.ate_rmse_m = Stat::of(c.ate);
+    }
+  }
+  for (const std::string& name : row_names) {
+    const auto& r = rows.at(name);
+    table.rows.push_back({name, r.first, r.second.size()});
+  }
+  sortRows(table.rows);
+  table.methods = sortedMethods(methods);
+  return table;
+}
+
 }  // namespace
 
 EpisodeSummary summarizeRecord(const nlohmann::json& record, const std::string& where,
@@ -190,6 +313,7 @@ EpisodeSummary summarizeRecord(const nlohmann::json& record, const std::string& 
     }
   }
   readWorldAndOptions(record, where, e);
+  readNoiseAndSlam(record, where, e);
   readCurve(record, where, e);
   if (record.contains("outputs") && !record["outputs"].is_null()) {
     if (!record["outputs"].is_string())
@@ -203,7 +327,7 @@ EpisodeSummary summarizeRecord(const nlohmann::json& record, const std::string& 
 ResultSet loadResults(const std::vector<fs::path>& inputs) {
   if (inputs.empty()) throw OptionError("report: no results directory given");
   ResultSet set;
-  std::set<EpisodeKey> seen;
+  std::set<std::pair<EpisodeKey, std::string>> seen;  // (key, setting)
   for (const fs::path& input : inputs) {
     std::error_code ec;
     const fs::path file = fs::is_directory(input, ec) ? input / "results.jsonl" : input;
@@ -216,7 +340,7 @@ ResultSet loadResults(const std::vector<fs::path>& inputs) {
     const ResultsScan scan =
         forEachRecord(file, [&](const nlohmann::json& record, const std::string& where) {
           EpisodeSummary e = summarizeRecord(record, where, file.parent_path());
-          if (!seen.insert(e.key).second) {
+          if (!seen.emplace(e.key, e.setting).second) {
             ++set.duplicates;
             return;
           }
@@ -224,6 +348,28 @@ ResultSet loadResults(const std::vector<fs::path>& inputs) {
         });
     if (scan.truncated_tail) ++set.truncated;
     set.files.push_back(file);
+  }
+  return set;
+}
+
+bool EpisodeSummary::succeeded() const {
+  return exploration_rate >= kSuccessRate && !slam_diverged;
+}
+
+std::string mainSetting(const std::vector<EpisodeSummary>& episodes) {
+  if (episodes.empty()) return {};
+  const bool noise_free = std::any_of(episodes.begin(), episodes.end(),
+                                      [](const EpisodeSummary& e) { return e.setting.empty(); });
+  return noise_free ? std::string() : episodes.front().setting;
+}
+
+ResultSet episodesOfSetting(const ResultSet& results, const std::string& setting) {
+  ResultSet set;
+  set.files = results.files;
+  set.duplicates = results.duplicates;
+  set.truncated = results.truncated;
+  for (const EpisodeSummary& e : results.episodes) {
+    if (e.setting == setting) set.episodes.push_back(e);
   }
   return set;
 }
@@ -253,17 +399,32 @@ std::string rowTitle(const ReportRow& row) {
 }
 
 std::string sourcesLine(const Report& report) {
-  std::string text = std::to_string(report.episodes) + " episodes from ";
+  std::string text = std::to_string(report.episodes) + " episodes";
+  if (!report.main_setting.empty()) text += " under " + report.main_setting;
+  text += " from ";
   for (std::size_t i = 0; i < report.files.size(); ++i) {
     text += (i ? ", " : "") + std::string("`") + report.files[i].string() + "`";
   }
+  const std::vector<std::string>& settings = report.table4.settings;
+  for (std::size_t i = 0; i < settings.size(); ++i) {
+    text += i == 0 ? ", and " : "; ";  // the settings' names hold commas
+    const std::size_t n = report.table4.episodes.at(settings[i]);
+    text += std::to_string(n) + (n == 1 ? " episode under " : " episodes under ") + settings[i];
+  }
+  if (!settings.empty()) text += " (Table IV)";
   return text;
 }
 
 Report buildReport(const ResultSet& results) {
   Report report;
-  report.episodes = results.episodes.size();
   report.files = results.files;
+  report.main_setting = mainSetting(results.episodes);
+  report.table4 = compareSettings(results.episodes, report.main_setting);
+  std::vector<const EpisodeSummary*> episodes;  // of the main setting
+  for (const EpisodeSummary& e : results.episodes) {
+    if (e.setting == report.main_setting) episodes.push_back(&e);
+  }
+  report.episodes = episodes.size();
 
   std::map<std::string, std::pair<bool, std::set<std::string>>> rows;  // name -> (group, worlds)
   std::set<std::string> methods;
@@ -285,7 +446,8 @@ Report buildReport(const ResultSet& results) {
   std::map<std::string, std::map<std::pair<std::string, std::string>, OracleReference>> oracles;
   const std::vector<std::string>& types = mapTypes();
 
-  for (const EpisodeSummary& e : results.episodes) {
+  for (const EpisodeSummary* episode : episodes) {
+    const EpisodeSummary& e = *episode;
     const std::string row = rowNameOf(e);
     const bool is_group = e.world_group != "builtin";
     if (e.random_start) ++report.random_start_episodes;
@@ -295,7 +457,7 @@ Report buildReport(const ResultSet& results) {
     methods.insert(e.key.method);
     Samples& c = cells[{row, e.key.method}];
     ++c.episodes;
-    if (e.exploration_rate >= kSuccessRate) ++c.successes;
+    if (e.succeeded()) ++c.successes;
     if (e.t98_s) c.t98.push_back(*e.t98_s);
     if (e.l98_m) c.l98.push_back(*e.l98_m);
     if (e.revisits) c.revisits.push_back(*e.revisits);
@@ -322,15 +484,8 @@ Report buildReport(const ResultSet& results) {
   }
 
   for (const auto& [name, r] : rows) report.rows.push_back({name, r.first, r.second.size()});
-  std::sort(report.rows.begin(), report.rows.end(), [](const ReportRow& a, const ReportRow& b) {
-    const auto rank = [](const ReportRow& r) { return r.is_group ? 200 : worldRank(r.name); };
-    return std::pair(rank(a), a.name) < std::pair(rank(b), b.name);
-  });
-  report.methods.assign(methods.begin(), methods.end());
-  std::sort(report.methods.begin(), report.methods.end(),
-            [](const std::string& a, const std::string& b) {
-              return std::pair(methodRank(a), a) < std::pair(methodRank(b), b);
-            });
+  sortRows(report.rows);
+  report.methods = sortedMethods(methods);
   for (const auto& [key, c] : cells) {
     MethodStats& s = report.table1[key];
     s.episodes = c.episodes;
@@ -343,10 +498,10 @@ Report buildReport(const ResultSet& results) {
   }
   // A row's cell repeats itself when each of its worlds run with several seeds had one outcome.
   std::map<std::pair<std::string, std::string>, std::pair<bool, bool>> repeats;  // (several, all same)
-  for (const EpisodeSummary& e : results.episodes) {
-    const auto& [distinct, count] = outcomes.at({e.key.world, e.key.method});
+  for (const EpisodeSummary* e : episodes) {
+    const auto& [distinct, count] = outcomes.at({e->key.world, e->key.method});
     if (count < 2) continue;
-    auto& r = repeats.try_emplace({rowNameOf(e), e.key.method}, false, true).first->second;
+    auto& r = repeats.try_emplace({rowNameOf(*e), e->key.method}, false, true).first->second;
     r.first = true;
     r.second = r.second && distinct.size() == 1;
   }
@@ -421,8 +576,9 @@ std::string sameEverySeedLine(const Report& report) {
 std::string table1Description() {
   return "T98 [s] and L98 [m]: simulated time and distance driven when the exploration rate "
          "first reached 98 %, mean ± sample standard deviation over the episodes that reached "
-         "it. Success: episodes whose final exploration rate is ≥ 98 %. *Paper*: the paper's "
-         "Table I (T s, L m). L98 / oracle (when the worlds could be loaded): each episode's L98 "
+         "it. Success: episodes whose final exploration rate is ≥ 98 % (and, with SLAM, whose "
+         "pose estimate did not diverge). *Paper*: the paper's Table I (T s, L m). L98 / oracle "
+         "(when the worlds could be loaded): each episode's L98 "
          "divided by the length of the full-knowledge oracle tour of its world (see Oracle "
          "reference), averaged. A group of worlds (world files of one folder, e.g. houseexpo) "
          "pools every world × seed episode.";
@@ -493,13 +649,7 @@ plots::HtmlTable table1Cells(const Report& report) {
       cells.push_back(has ? meanSd(it->second.l98_m) : "–");
       if (paper_cols) cells.push_back(paper ? format("%.0f", paper->l_m) : "–");
       if (oracle) cells.push_back(has ? ratioText(it->second.l98_oracle_ratio) : "–");
-      if (has) {
-        const MethodStats& s = it->second;
-        cells.push_back(std::to_string(s.successes) + "/" + std::to_string(s.episodes) + " (" +
-                        percent(s.successes, s.episodes) + " %)");
-      } else {
-        cells.push_back("–");
-      }
+      cells.push_back(has ? successText(it->second.successes, it->second.episodes) : "–");
     }
     table.rows.push_back(std::move(cells));
   }
@@ -606,6 +756,71 @@ plots::HtmlTable table3Cells(const Report& report) {
   return table;
 }
 
+std::optional<plots::HtmlTable> slamCells(const Report& report) {
+  if (!report.hasTable4()) return std::nullopt;
+  const SettingComparison& comparison = report.table4;
+  plots::HtmlTable table;
+  table.caption = "Table IV: exploration under noise and SLAM";
+  table.header = {"World", "Method"};
+  const std::string main = settingTitle(report.main_setting);
+  for (const char* column : {" T98 (s)", " L98 (m)", " success"})
+    table.header.push_back(main + column);
+  for (const std::string& setting : comparison.settings) {
+    for (const char* column : {" T98 (s)", " L98 (m)", " success", " ATE (m)", " L98 ratio"})
+      table.header.push_back(setting + column);
+  }
+  for (const ReportRow& row : comparison.rows) {
+    for (const std::string& method : comparison.methods) {
+      const auto cell = comparison.cells.find({row.name, method});
+      if (cell == comparison.cells.end()) continue;
+      const std::map<std::string, SettingStats>& by_setting = cell->second;
+      std::vector<std::string> cells = {rowTitle(row), methodLabel(method)};
+      const auto main_it = by_setting.find(report.main_setting);
+      const SettingStats* main_stats = main_it == by_setting.end() ? nullptr : &main_it->second;
+      if (main_stats) {
+        cells.push_back(meanSd(main_stats->t98_s));
+        cells.push_back(meanSd(main_stats->l98_m));
+        cells.push_back(successText(main_stats->successes, main_stats->episodes));
+      } else {
+        cells.insert(cells.end(), 3, "–");
+      }
+      for (const std::string& setting : comparison.settings) {
+        const auto it = by_setting.find(setting);
+        if (it == by_setting.end()) {
+          cells.insert(cells.end(), 5, "–");
+          continue;
+        }
+        const SettingStats& s = it->second;
+        cells.push_back(meanSd(s.t98_s));
+        cells.push_back(meanSd(s.l98_m));
+        std::string success = successText(s.successes, s.episodes);
+        if (s.diverged) success += ", " + std::to_string(s.diverged) + " diverged";
+        cells.push_back(success);
+        cells.push_back(meanSd(s.ate_rmse_m, "%.2f"));
+        const bool ratio =
+            main_stats && main_stats->l98_m.n && main_stats->l98_m.mean > 0.0 && s.l98_m.n;
+        cells.push_back(ratio ? format("%.2f", s.l98_m.mean / main_stats->l98_m.mean) + "×" : "–");
+      }
+      table.rows.push_back(std::move(cells));
+    }
+  }
+  return table;
+}
+
+std::string slamDescription() {
+  return "Each method under simulated sensor noise and SLAM beside itself in the setting of "
+         "Tables I-III (noise-free when the results hold it: exact ranges and the true pose). A "
+         "setting names its noise profile (noise.profile: tb3, the TurtleBot3's LDS-01 laser, "
+         "VLP-16 lidar and wheel odometry, or harsh, 2.5 × their noise) and its SLAM mode "
+         "(slam.mode: icp, MRPT's ICP-SLAM, or rbpf, its particle-filter SLAM), whose pose "
+         "estimate and map the robot explores with. T98 [s] and L98 [m] are mean ± sample "
+         "standard deviation over each cell's successful episodes: final exploration rate ≥ 98 % "
+         "and SLAM not diverged (a run whose ATE exceeded slam.diverged_ate_m counts as a "
+         "failure, however much it explored). ATE [m]: the RMSE of the estimated against the "
+         "true positions over the run, mean ± sd over the cell's episodes; L98 ratio: the "
+         "setting's mean L98 over that of the first columns, same world and method.";
+}
+
 std::string table1Markdown(const Report& report) {
   const std::string same = sameEverySeedLine(report);
   const std::string starts = startPosesLine(report);
@@ -690,14 +905,23 @@ std::string table3Markdown(const Report& report) {
   return md + "\n";
 }
 
+std::string slamMarkdown(const Report& report) {
+  std::optional<plots::HtmlTable> table = slamCells(report);
+  if (!table) return {};
+  table->caption.clear();
+  return markdownSection("# Table IV: exploration under noise and SLAM", slamDescription(),
+                         sourcesLine(report), *table);
+}
+
 std::vector<fs::path> writeReport(const Report& report, const fs::path& directory) {
   io::ensureWritableDirectory(directory);
-  const std::vector<std::pair<std::string, std::string>> files = {
+  std::vector<std::pair<std::string, std::string>> files = {
       {"table1.md", table1Markdown(report)},
       {"table1.csv", table1Csv(report)},
       {"table2.md", table2Markdown(report)},
       {"table3.md", table3Markdown(report)},
   };
+  if (report.hasTable4()) files.emplace_back("table4_slam.md", slamMarkdown(report));
   std::vector<fs::path> written;
   for (const auto& [name, text] : files) {
     io::writeFileAtomic(directory / name, text);

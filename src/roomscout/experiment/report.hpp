@@ -1,8 +1,9 @@
 #pragma once
 // `roomscout report`: tables in the layout of the paper's Tables I-III from one or more
-// results.jsonl files. loadResults() gives every episode's key, numbers, curve and (for runs
-// that kept their outputs) trajectory; attachOracleTours() (oracle_references.hpp) adds the
-// length of a full-knowledge tour of each world; buildReport() the per world x method
+// results.jsonl files, and Table IV, which sets each method under sensor noise and SLAM beside
+// itself without. loadResults() gives every episode's key, setting, numbers, curve and (for
+// runs that kept their outputs) trajectory; attachOracleTours() (oracle_references.hpp) adds
+// the length of a full-knowledge tour of each world; buildReport() the per world x method
 // statistics. report_figures.hpp draws the figures, report_writer.hpp writes everything.
 
 #include <array>
@@ -71,24 +72,40 @@ struct EpisodeSummary {
   std::vector<CurvePoint> curve;   ///< rate against length (record's curve), in order
   std::vector<Vec2> trajectory_m;  ///< positions (map frame), kept only for records with outputs
   std::optional<OracleReference> oracle;  ///< set by attachOracleTours()
+  /// The sensor noise and SLAM the episode ran with, e.g. "noise tb3, slam icp", "noise tb3"
+  /// or "slam icp": the record's options noise.profile and slam.mode (else the mode of its
+  /// `slam` block), each left out when "none" or absent. Empty for noise-free sensors and the
+  /// true pose (and for records older than these options).
+  std::string setting;
+  /// RMSE of the SLAM pose estimate's positions against the true ones over the run [m]
+  /// (record's slam.ate_rmse_m); none without SLAM.
+  std::optional<double> ate_rmse_m;
+  /// SLAM's error exceeded the configured bound (record's slam.diverged): not a success.
+  bool slam_diverged = false;
+
+  /// Final exploration rate >= kSuccessRate and SLAM (if any) did not diverge.
+  bool succeeded() const;
 };
 
 /// The episode's numbers from a results record. Throws InputError(where, ...) when the key or
-/// exploration_rate is missing or a field has the wrong type. `results_dir` is the folder of
-/// the results file, against which the record's `outputs` is resolved.
+/// exploration_rate is missing or a field (also of the `slam` block and the options
+/// noise.profile and slam.mode) has the wrong type. `results_dir` is the folder of the results
+/// file, against which the record's `outputs` is resolved.
 EpisodeSummary summarizeRecord(const nlohmann::json& record, const std::string& where,
                                const std::filesystem::path& results_dir = {});
 
-/// Episodes merged from several results files, one per key.
+/// Episodes merged from several results files, one per key and setting.
 struct ResultSet {
   std::vector<EpisodeSummary> episodes;      ///< in input order
   std::vector<std::filesystem::path> files;  ///< the results files read
-  std::size_t duplicates = 0;                ///< records dropped because their key came earlier
-  std::size_t truncated = 0;                 ///< files that ended in a truncated line (ignored)
+  /// Records dropped because their key and setting came earlier.
+  std::size_t duplicates = 0;
+  std::size_t truncated = 0;  ///< files that ended in a truncated line (ignored)
 };
 
 /// Reads each input (a bench directory, meaning its results.jsonl, or a .jsonl file) and
-/// merges the records; of records with the same key the first one read is kept. Throws
+/// merges the records; of records with the same key and setting the first one read is kept
+/// (the same world, method and seed under another setting is another episode). Throws
 /// InputError naming the file (and line) that is missing or malformed.
 ResultSet loadResults(const std::vector<std::filesystem::path>& inputs);
 
@@ -111,7 +128,7 @@ struct ReportRow {
 /// Table I's numbers for one row x method. Group rows pool every world x seed episode.
 struct MethodStats {
   std::size_t episodes = 0;
-  std::size_t successes = 0;  ///< final exploration rate >= 98 %
+  std::size_t successes = 0;  ///< EpisodeSummary::succeeded(): final rate >= 98 %, not diverged
   Stat t98_s;                 ///< over the episodes that reached 98 %
   Stat l98_m;
   Stat revisits;  ///< over the episodes that recorded it
@@ -142,6 +159,32 @@ struct MapStats {
   Stat update_p95_s;     ///< of the per-episode 95th percentiles
 };
 
+/// Table IV's numbers for one row x method in one setting. Group rows pool every world x seed
+/// episode.
+struct SettingStats {
+  std::size_t episodes = 0;
+  std::size_t successes = 0;  ///< EpisodeSummary::succeeded()
+  std::size_t diverged = 0;   ///< episodes whose SLAM diverged
+  Stat t98_s;                 ///< over the successful episodes
+  Stat l98_m;                 ///< over the successful episodes
+  Stat ate_rmse_m;            ///< over the episodes that recorded it
+};
+
+/// Table IV: each method under the settings other than the main one (see Report), beside the
+/// same method in the main setting.
+struct SettingComparison {
+  std::vector<std::string> settings;  ///< the other settings, in order of first appearance
+  std::map<std::string, std::size_t> episodes;  ///< episodes of each other setting
+  std::vector<ReportRow> rows;                  ///< rows with episodes in another setting
+  std::vector<std::string> methods;             ///< methods with episodes in another setting
+  /// (row, method) -> setting -> numbers, for the (row, method) pairs with episodes in another
+  /// setting; the main setting is there too when that pair has episodes in it.
+  std::map<std::pair<std::string, std::string>, std::map<std::string, SettingStats>> cells;
+};
+
+/// Tables I-III, the figures and every count are of the episodes of the main setting: the
+/// noise-free one ("") when some episode has it, else the setting of the first episode. Table
+/// IV compares the other settings with it.
 struct Report {
   std::vector<ReportRow> rows;       ///< paper worlds first, then other worlds, then groups
   std::vector<std::string> methods;  ///< paper order, then others by name
@@ -149,12 +192,16 @@ struct Report {
   std::map<std::pair<std::string, std::string>, MapStats> table3;     ///< (row, map type)
   std::map<std::string, std::array<bool, 4>> map_types;  ///< method -> maps recorded (Table II)
   std::map<std::string, OracleRowStats> oracle;  ///< by row; rows whose worlds have an oracle
-  std::size_t episodes = 0;
+  std::size_t episodes = 0;                      ///< of the main setting
   std::size_t random_start_episodes = 0;  ///< episodes started at a pose drawn from their seed
   std::vector<std::filesystem::path> files;
+  std::string main_setting;  ///< EpisodeSummary::setting of the episodes of Tables I-III
+  SettingComparison table4;  ///< empty when every episode is of the main setting
 
   /// True when some episode has an oracle: Table I then shows L98 / oracle.
   bool hasOracle() const { return !oracle.empty(); }
+  /// True when some episode is of another setting than the main one: Table IV exists.
+  bool hasTable4() const { return !table4.settings.empty(); }
   /// Methods whose every row with several seeds of a world has same_every_seed, in
   /// `methods` order.
   std::vector<std::string> methodsSameEverySeed() const;
@@ -163,17 +210,28 @@ struct Report {
 /// Success threshold of Table I's success rate (final exploration rate).
 inline constexpr double kSuccessRate = 0.98;
 
+/// The main setting of these episodes (see Report).
+std::string mainSetting(const std::vector<EpisodeSummary>& episodes);
+
+/// The episodes of one setting, in order, with the files and counts of `results`.
+ResultSet episodesOfSetting(const ResultSet& results, const std::string& setting);
+
 Report buildReport(const ResultSet& results);
 
 /// The report's tables as cells, shared by the markdown files and the HTML page: Table I
 /// (method rows, per world T98, paper T, L98, paper L, L98 / oracle when known, success),
 /// the revisits, the oracle reference (rows with an oracle; none when there is none),
-/// Table II and Table III.
+/// Table II and Table III, and Table IV (none when every episode is of the main setting).
 plots::HtmlTable table1Cells(const Report& report);
 plots::HtmlTable revisitsCells(const Report& report);
 std::optional<plots::HtmlTable> oracleCells(const Report& report);
 plots::HtmlTable table2Cells(const Report& report);
 plots::HtmlTable table3Cells(const Report& report);
+/// Table IV: a line per row x method with episodes in another setting; World, Method, then the
+/// main setting's T98, L98 and success, then per other setting (in order of first appearance)
+/// its T98, L98, success (with the diverged runs counted when there are any), ATE and L98
+/// ratio (its mean L98 over the main setting's).
+std::optional<plots::HtmlTable> slamCells(const Report& report);
 
 /// The text that explains each table (also on the HTML page).
 std::string table1Description();
@@ -181,7 +239,8 @@ std::string revisitsDescription();
 std::string oracleDescription();
 std::string table2Description();
 std::string table3Description();
-/// "N episodes from `file`, ...".
+std::string slamDescription();
+/// "N episodes from `file`, ...", and how many episodes of other settings Table IV holds.
 std::string sourcesLine(const Report& report);
 /// Names the methods of methodsSameEverySeed() and why their sd is 0; empty when none.
 std::string sameEverySeedLine(const Report& report);
@@ -198,9 +257,12 @@ std::string table1Markdown(const Report& report);
 std::string table1Csv(const Report& report);
 std::string table2Markdown(const Report& report);
 std::string table3Markdown(const Report& report);
+/// Table IV's heading, description, sources and table; empty when there is no Table IV.
+std::string slamMarkdown(const Report& report);
 
-/// Writes table1.md, table1.csv, table2.md and table3.md into `directory` (created if
-/// needed), each atomically; returns their paths. Throws InputError when it cannot write.
+/// Writes table1.md, table1.csv, table2.md, table3.md and, when the report has other settings,
+/// table4_slam.md into `directory` (created if needed), each atomically; returns their paths.
+/// Throws InputError when it cannot write.
 std::vector<std::filesystem::path> writeReport(const Report& report,
                                                const std::filesystem::path& directory);
 

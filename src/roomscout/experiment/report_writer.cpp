@@ -55,6 +55,12 @@ plots::HtmlPage reportPage(const Report& report, const std::vector<ReportFigure>
   t3.blocks.push_back(plots::HtmlParagraph{plain(table3Description())});
   t3.blocks.push_back(plainTable(table3Cells(report)));
   page.sections = {t1, t2, t3};
+  if (std::optional<plots::HtmlTable> slam = slamCells(report)) {
+    plots::HtmlSection t4{"Table IV: exploration under noise and SLAM", {}};
+    t4.blocks.push_back(plots::HtmlParagraph{plain(slamDescription())});
+    t4.blocks.push_back(plainTable(*slam));
+    page.sections.push_back(std::move(t4));
+  }
 
   struct Kind {
     const char* kind;
@@ -91,7 +97,9 @@ ReportOutput runReport(const std::vector<fs::path>& inputs, const fs::path& out,
   output.files = writeReport(report, out);
   ReportFigures figures;
   if (settings.figures) {
-    figures = renderReportFigures(results, report);
+    // The figures show what Tables I-III do: the main setting's episodes.
+    figures = renderReportFigures(
+        report.hasTable4() ? episodesOfSetting(results, report.main_setting) : results, report);
     for (std::string& n : figures.notes) output.notes.push_back(std::move(n));
     for (fs::path& f : writeReportFigures(figures.figures, out / "figures"))
       output.files.push_back(std::move(f));

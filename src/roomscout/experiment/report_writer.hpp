@@ -24,20 +24,21 @@ struct ReportSettings {
 struct ReportOutput {
   std::vector<std::filesystem::path> files;  ///< every file written, tables first
   std::vector<std::string> notes;            ///< worlds without oracle, figures left out
-  std::size_t episodes = 0;
-  std::size_t duplicates = 0;  ///< records dropped because their key came earlier
+  std::size_t episodes = 0;                  ///< episodes read, of every setting
+  std::size_t duplicates = 0;  ///< records dropped because their key and setting came earlier
   std::size_t truncated = 0;   ///< results files that ended in a truncated line
 };
 
-/// The HTML page of a report: Tables I (with revisits and oracle reference), II and III, then
-/// the figures by kind (Fig. 5, 6, 7, revisits); `notes` under the title.
+/// The HTML page of a report: Tables I (with revisits and oracle reference), II, III and, when
+/// the results hold other settings than the main one, IV, then the figures by kind (Fig. 5, 6,
+/// 7, revisits; of the main setting); `notes` under the title.
 plots::HtmlPage reportPage(const Report& report, const std::vector<ReportFigure>& figures,
                            const std::vector<std::string>& notes = {});
 
 /// Loads the results of `inputs` (loadResults), plans the oracle tours, and writes into `out`
-/// (created if needed): table1.md, table1.csv, table2.md, table3.md, figures/*.png + *.svg and
-/// report.html. Throws as loadResults for bad inputs and InputError when a file cannot be
-/// written.
+/// (created if needed): table1.md, table1.csv, table2.md, table3.md, table4_slam.md (when
+/// there is a Table IV), figures/*.png + *.svg and report.html. Throws as loadResults for bad
+/// inputs and InputError when a file cannot be written.
 ReportOutput runReport(const std::vector<std::filesystem::path>& inputs,
                        const std::filesystem::path& out, const ReportSettings& settings = {});
 

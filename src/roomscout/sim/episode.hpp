@@ -63,7 +63,8 @@ struct EpisodeConfig {
   /// range noise matters.
   NoiseOptions noise;
   /// SLAM in the loop: with a mode other than none, the robot moves in the true world while
-  /// the Explorer, the follower and the point cloud's keyframes use MRPT's map and estimate.
+  /// the Explorer, the follower, the occupancy grid and the point cloud's keyframes use MRPT's
+  /// estimate of its pose (docs/slam.md).
   roomscout::slam::SlamOptions slam;
   /// Costmap, planner, watchdogs, rooms and skeleton graph. Its stall threshold is 0 here:
   /// explorerOptionsFor() makes it 0.1 % of the world's reachable floor unless a config sets it.

@@ -66,8 +66,11 @@ void PointCloudObserver::insertScan(const Pose2& truth, const Pose2& believed) {
   const auto start = std::chrono::steady_clock::now();
   const LidarScan scan = lidar_.scan(truth);
   // The sensor's mounting on the robot, carried onto the believed pose.
-  const Eigen::Isometry3d T_robot_sensor = planar(truth).inverse() * scan.T_map_sensor;
-  const Eigen::Affine3f T_map_sensor = Eigen::Affine3f((planar(believed) * T_robot_sensor).matrix().cast<float>());
+  const bool told_the_truth =
+      truth.x_m == believed.x_m && truth.y_m == believed.y_m && truth.yaw_rad == believed.yaw_rad;
+  const Eigen::Isometry3d T_believed_sensor =
+      told_the_truth ? scan.T_map_sensor : planar(believed) * planar(truth).inverse() * scan.T_map_sensor;
+  const Eigen::Affine3f T_map_sensor = Eigen::Affine3f(T_believed_sensor.matrix().cast<float>());
   points_map_.clear();
   points_map_.reserve(scan.points_sensor.size());
   for (std::size_t i = 0; i < scan.points_sensor.size(); ++i) {
