@@ -171,6 +171,7 @@ Slam::Slam(const SlamOptions& options, const Pose2& start, std::uint64_t seed)
       mrpt::random::getRandomGenerator().randomize(static_cast<uint32_t>(seed ^ (seed >> 32)));
       auto rbpf = std::make_unique<mrpt::slam::CMetricMapBuilderRBPF>(c);
       rbpf->setVerbosityLevel(mrpt::system::LVL_ERROR);
+      rbpf->mapPDF.setVerbosityLevel(mrpt::system::LVL_ERROR);
       rbpf->initialize(mrpt::maps::CSimpleMap(), &x0);
       s.builder = std::move(rbpf);
     }
