@@ -183,6 +183,32 @@ TEST_F(CliTest, UnknownOptionInConfig) {
   EXPECT_NE(r.output.find("num_beam"), std::string::npos) << r.output;
 }
 
+TEST_F(CliTest, UnknownNoiseProfileOrSlamModeNamesTheKeyAndLeavesNoOutputDirectory) {
+  for (const std::string& text : {std::string("noise:\n  profile: loud\n"), std::string("slam:\n  mode: gmapping\n")}) {
+    const fs::path cfg = write("cfg.yaml", text);
+    const fs::path out = dir_ / "new" / "out";
+    const CommandResult r = run("explore --world small_house --config " + cfg.string() + " --out " + out.string());
+    EXPECT_EQ(r.exit_code, 2) << r.output;
+    EXPECT_NE(r.output.find("cfg.yaml"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find(text.find("loud") != std::string::npos ? "noise.profile" : "slam.mode"), std::string::npos)
+        << r.output;
+    // The failed run removed the directory it had created; the existing parent stays.
+    EXPECT_FALSE(fs::exists(out)) << r.output;
+  }
+  // A directory that existed before the run is never removed.
+  fs::create_directories(dir_ / "kept");
+  const CommandResult r = run("explore --world small_house --method bogus --out " + (dir_ / "kept").string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_TRUE(fs::is_directory(dir_ / "kept"));
+}
+
+TEST_F(CliTest, NegativeSeedIsRefused) {
+  const CommandResult r = run("explore --world small_house --seed -5 --out " + (dir_ / "o").string());
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.output.find("--seed"), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(dir_ / "o"));
+}
+
 TEST_F(CliTest, OutputDirectoryNotWritable) {
   write("file", "x");
   const CommandResult r = run("explore --world small_house --out " + (dir_ / "file" / "sub").string());

@@ -13,6 +13,7 @@
 #include "roomscout/experiment/bench_plan.hpp"
 #include "roomscout/experiment/bench_runner.hpp"
 #include "roomscout/experiment/report_writer.hpp"
+#include "roomscout/io/atomic_file.hpp"
 #include "roomscout/io/pcd_io.hpp"
 
 namespace roomscout::cli {
@@ -112,6 +113,7 @@ int runBenchCommand(const BenchArgs& args) {
   options.settings.pcd_format = io::parsePcdFormat(args.pcd_format);
   options.settings.pcd_precision_m = args.pcd_precision_m;
 
+  io::OutputDirectory out(options.out);  // removed again if the bench fails before writing
   experiment::BenchSummary summary;
   {
     BenchProgressBar bar;
@@ -133,6 +135,7 @@ int runBenchCommand(const BenchArgs& args) {
       "(report.html)\n",
       p.planned, p.done, p.skipped, p.elapsed_s, summary.results.string().c_str(),
       options.out.string().c_str());
+  out.keep();
   return 0;
 }
 

@@ -74,8 +74,9 @@ Pose2 parseStart(const std::string& text) {
 }
 
 int runExplore(const ExploreArgs& args) {
-  // Fail before simulating anything when the output cannot be written.
-  io::ensureWritableDirectory(args.out);
+  // Fail before simulating anything when the output cannot be written; a run that fails
+  // leaves no empty directory behind.
+  io::OutputDirectory out(args.out);
   experiment::RunSettings settings;
   settings.pcd_format = io::parsePcdFormat(args.pcd_format);
   settings.pcd_precision_m = args.pcd_precision_m;
@@ -117,6 +118,7 @@ int runExplore(const ExploreArgs& args) {
               result.exploration_rate * 100.0, fmt(result.t98_s, "s").c_str(), fmt(result.l98_m, "m").c_str(),
               result.timed_out ? "timed out" : fmt(result.t_done_s, "s").c_str(), revisits.c_str(),
               result.wall_time_s, args.out.c_str());
+  out.keep();
   return 0;
 }
 
@@ -144,7 +146,14 @@ int main(int argc, char** argv) {
   explore_cmd->add_option("--world", explore.world, "built-in world name, world YAML, or map_server YAML")->required();
   explore_cmd->add_option("--method", explore.method, "exploration method (see `roomscout methods`)")
       ->capture_default_str();
-  explore_cmd->add_option("--seed", explore.seed, "seed of every random choice")->capture_default_str();
+  explore_cmd->add_option("--seed", explore.seed, "seed of every random choice (an integer >= 0)")
+      ->check(CLI::Validator(
+          [](std::string& text) {
+            // CLI11 would wrap a negative number round into a huge unsigned seed.
+            return text.find('-') == std::string::npos ? std::string() : "must be an integer >= 0, got " + text;
+          },
+          "INT>=0"))
+      ->capture_default_str();
   explore_cmd->add_option("--out", explore.out, "output directory")->required();
   explore_cmd->add_option("--config", explore.config, "YAML file of options, grouped as in metrics.json");
   explore_cmd->add_option("--max-time", explore.max_time_s, "simulated time limit [s]");

@@ -40,7 +40,7 @@ int runMaps(const MapsArgs& args) {
   }
   const RoomSegmenter segmenter(seg_options);
   const TopologyBuilder builder(topo_options);
-  io::ensureWritableDirectory(args.out);
+  io::OutputDirectory out(args.out);  // removed again if the command fails and it is empty
 
   const cv::Mat states = maps::stateImage(grid);
   auto t0 = std::chrono::steady_clock::now();
@@ -57,6 +57,7 @@ int runMaps(const MapsArgs& args) {
   std::printf("%s: %zu rooms (%.1f ms), %zu nodes, %zu edges (%.1f ms) -> %s\n", args.map.c_str(),
               semantic.regions().size(), semantic_ms, topology.nodes().size(), topology.edges().size(), topology_ms,
               args.out.c_str());
+  out.keep();
   return 0;
 }
 

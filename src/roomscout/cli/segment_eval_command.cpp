@@ -44,7 +44,7 @@ int runSegmentEval(const SegmentEvalArgs& args) {
   const RoomSegmenter segmenter(seg_options);
   const TopologyBuilder builder(topo_options);
   const std::vector<io::SegmentationDatasetMap> maps = io::listSegmentationDataset(args.dataset);
-  io::ensureWritableDirectory(args.out);
+  io::OutputDirectory out(args.out);  // removed again if the command fails and it is empty
   const double resolution_m = 0.05;  // the benchmark's maps, all of them
 
   nlohmann::json rows = nlohmann::json::array();
@@ -121,6 +121,7 @@ int runSegmentEval(const SegmentEvalArgs& args) {
                                   {"maps", rows},
                                   {"options", options}};
   io::writeFileAtomic(std::filesystem::path(args.out) / "results.json", results.dump(2) + "\n");
+  out.keep();
   return 0;
 }
 

@@ -126,15 +126,17 @@ void writeImageAtomic(const std::filesystem::path& path, const cv::Mat& image) {
                   std::string_view(reinterpret_cast<const char*>(encoded.data()), encoded.size()));
 }
 
-void ensureWritableDirectory(const std::filesystem::path& directory) {
+bool ensureWritableDirectory(const std::filesystem::path& directory) {
   std::error_code ec;
   const auto status = std::filesystem::status(directory, ec);
+  bool created = false;
   if (std::filesystem::exists(status)) {
     if (!std::filesystem::is_directory(status)) {
       throw InputError(directory.string(), "not a directory");
     }
-  } else if (!std::filesystem::create_directories(directory, ec) && ec) {
-    throw InputError(directory.string(), "cannot create directory: " + ec.message());
+  } else {
+    created = std::filesystem::create_directories(directory, ec);
+    if (!created && ec) throw InputError(directory.string(), "cannot create directory: " + ec.message());
   }
   const std::filesystem::path probe = directory / (".roomscout_probe." + uniqueSuffix());
   const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
@@ -143,6 +145,17 @@ void ensureWritableDirectory(const std::filesystem::path& directory) {
   }
   ::close(fd);
   ::unlink(probe.c_str());
+  return created;
+}
+
+OutputDirectory::OutputDirectory(std::filesystem::path directory) : directory_(std::move(directory)) {
+  created_ = ensureWritableDirectory(directory_);
+}
+
+OutputDirectory::~OutputDirectory() {
+  if (!created_) return;
+  std::error_code ec;
+  if (std::filesystem::is_empty(directory_, ec) && !ec) std::filesystem::remove(directory_, ec);
 }
 
 std::string readFile(const std::filesystem::path& path) {

@@ -21,9 +21,27 @@ void writeFileAtomic(const std::filesystem::path& path, std::string_view bytes);
 void writeImageAtomic(const std::filesystem::path& path, const cv::Mat& image);
 
 /// Creates `directory` (and its parents) if needed and checks that files can be created in
-/// it by creating and removing a probe file. Throws InputError(directory, problem) when it
-/// exists but is not a directory, cannot be created, or is not writable.
-void ensureWritableDirectory(const std::filesystem::path& directory);
+/// it by creating and removing a probe file. Returns true when it created the directory.
+/// Throws InputError(directory, problem) when it exists but is not a directory, cannot be
+/// created, or is not writable.
+bool ensureWritableDirectory(const std::filesystem::path& directory);
+
+/// A command's output directory: created (ensureWritableDirectory) when the object is made,
+/// and removed again when the object goes before keep() was called (the command failed) if
+/// this object created it and it is still empty, so a failed command leaves nothing behind.
+class OutputDirectory {
+ public:
+  explicit OutputDirectory(std::filesystem::path directory);
+  ~OutputDirectory();
+  OutputDirectory(const OutputDirectory&) = delete;
+  OutputDirectory& operator=(const OutputDirectory&) = delete;
+  /// The command succeeded: leave the directory.
+  void keep() { created_ = false; }
+
+ private:
+  std::filesystem::path directory_;
+  bool created_ = false;
+};
 
 /// Reads a whole file. Throws InputError(path, "file not found") when it does not exist and
 /// InputError(path, "cannot read: <reason>") when it cannot be read (e.g. it is a directory).
