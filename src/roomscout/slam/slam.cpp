@@ -108,7 +108,7 @@ struct Slam::Impl {
   void configureIcp(mrpt::slam::CICP::TConfigParams& icp) const {
     // MRPT's demo values for laser ICP-SLAM (icp-slam_demo_classic.ini), but pairs at most
     // 15 cm apart: the scans are matched every few centimetres of odometry, and a wider
-    // window pairs the two faces of a thin wall seen from either side.
+    // window pairs the two faces of a thin wall more often (see docs/slam.md, Limits).
     icp.maxIterations = 60;
     icp.thresholdDist = 0.15;
     icp.thresholdAng = 1.0 * M_PI / 180.0;
