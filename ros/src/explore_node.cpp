@@ -65,18 +65,18 @@ struct ExploreNodeParams {
 
   static ExploreNodeParams load(const ros::NodeHandle& pn) {
     ExploreNodeParams p;
-    p.method = typedParam(pn, "method", p.method, "a string");
-    p.config = typedParam(pn, "config", p.config, "a string");
-    p.seed = typedParam(pn, "seed", p.seed, "an integer");
-    p.map_frame = typedParam(pn, "map_frame", p.map_frame, "a string");
-    p.base_frame = typedParam(pn, "base_frame", p.base_frame, "a string");
-    p.save_dir = typedParam(pn, "save_dir", p.save_dir, "a string");
-    p.move_base = typedParam(pn, "move_base_action", p.move_base, "a string");
-    p.cycle_period_s = typedParam(pn, "cycle_period_s", p.cycle_period_s, "a number");
-    p.progress_timeout_s = typedParam(pn, "progress_timeout_s", p.progress_timeout_s, "a number");
-    p.occupied_percent = typedParam(pn, "occupied_percent", p.occupied_percent, "an integer");
-    p.free_percent = typedParam(pn, "free_percent", p.free_percent, "an integer");
-    p.marker_period_s = typedParam(pn, "marker_period_s", p.marker_period_s, "a number");
+    p.method = typedParam(pn, "method", p.method);
+    p.config = typedParam(pn, "config", p.config);
+    p.seed = typedParam(pn, "seed", p.seed);
+    p.map_frame = typedParam(pn, "map_frame", p.map_frame);
+    p.base_frame = typedParam(pn, "base_frame", p.base_frame);
+    p.save_dir = typedParam(pn, "save_dir", p.save_dir);
+    p.move_base = typedParam(pn, "move_base_action", p.move_base);
+    p.cycle_period_s = typedParam(pn, "cycle_period_s", p.cycle_period_s);
+    p.progress_timeout_s = typedParam(pn, "progress_timeout_s", p.progress_timeout_s);
+    p.occupied_percent = typedParam(pn, "occupied_percent", p.occupied_percent);
+    p.free_percent = typedParam(pn, "free_percent", p.free_percent);
+    p.marker_period_s = typedParam(pn, "marker_period_s", p.marker_period_s);
     if (p.seed < 0) throw OptionError("~seed must be >= 0, not " + std::to_string(p.seed));
     if (!(p.cycle_period_s > 0.0)) throw OptionError("~cycle_period_s must be > 0");
     if (!(p.marker_period_s > 0.0)) throw OptionError("~marker_period_s must be > 0");

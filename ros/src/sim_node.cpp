@@ -117,7 +117,7 @@ std::string formatNumber(double v) {
 }
 
 double nonNegativeParam(const ros::NodeHandle& pnh, const std::string& name, double fallback) {
-  const double value = typedParam(pnh, name, fallback, "a number");
+  const double value = typedParam(pnh, name, fallback);
   if (!(std::isfinite(value) && value >= 0.0)) {
     throw OptionError("~" + name + " must be a finite number >= 0, not " + formatNumber(value));
   }
@@ -172,7 +172,7 @@ std::optional<AbortZone> readAbortZone(const ros::NodeHandle& pnh) {
 
 std::string frameParam(const ros::NodeHandle& pnh, const std::string& name,
                        const std::string& fallback) {
-  const std::string frame = typedParam(pnh, name, fallback, "a string");
+  const std::string frame = typedParam(pnh, name, fallback);
   if (frame.empty()) throw OptionError("~" + name + " must not be empty");
   return frame;
 }
@@ -180,18 +180,18 @@ std::string frameParam(const ros::NodeHandle& pnh, const std::string& name,
 /// Reads and checks every private parameter; throws OptionError naming the bad one.
 NodeParameters readParameters(const ros::NodeHandle& pnh) {
   NodeParameters p;
-  p.world = typedParam(pnh, "world", p.world, "a string");
-  p.room_labels = typedParam(pnh, "room_labels", p.room_labels, "a string");
-  p.config = typedParam(pnh, "config", p.config, "a string");
-  const int seed = typedParam(pnh, "seed", 1, "an integer");
+  p.world = typedParam(pnh, "world", p.world);
+  p.room_labels = typedParam(pnh, "room_labels", p.room_labels);
+  p.config = typedParam(pnh, "config", p.config);
+  const int seed = typedParam(pnh, "seed", 1);
   if (seed < 0) throw OptionError("~seed must be >= 0, not " + std::to_string(seed));
   p.seed = static_cast<std::uint64_t>(seed);
   p.real_time_factor = nonNegativeParam(pnh, "real_time_factor", p.real_time_factor);
   p.map_period_s = nonNegativeParam(pnh, "map_period_s", p.map_period_s);
   p.goal_wait_s = nonNegativeParam(pnh, "goal_wait_s", p.goal_wait_s);
-  p.sync_topic = typedParam(pnh, "sync_topic", p.sync_topic, "a string");
+  p.sync_topic = typedParam(pnh, "sync_topic", p.sync_topic);
   p.sync_timeout_s = nonNegativeParam(pnh, "sync_timeout_s", p.sync_timeout_s);
-  p.points = typedParam(pnh, "points", p.points, "true or false");
+  p.points = typedParam(pnh, "points", p.points);
   p.map_frame = frameParam(pnh, "map_frame", p.map_frame);
   p.odom_frame = frameParam(pnh, "odom_frame", p.odom_frame);
   p.base_frame = frameParam(pnh, "base_frame", p.base_frame);
