@@ -19,11 +19,13 @@ const sim::WorldModel& largeOffice() {
 }
 
 /// Poses spread over the reachable floor, deterministic.
-std::vector<Pose2> samplePoses(const sim::WorldModel& model, const sim::ExplorationTruth& truth, int count) {
+std::vector<Pose2> samplePoses(const sim::WorldModel& model, const sim::ExplorationTruth& truth,
+                               int count) {
   std::vector<Pose2> poses;
   const auto& cells = truth.reachableCells();
   for (int i = 0; i < count; ++i) {
-    const Vec2 p = truth.geometry().centerOf(truth.geometry().cellAt(cells[(cells.size() * i) / count]));
+    const Vec2 p =
+        truth.geometry().centerOf(truth.geometry().cellAt(cells[(cells.size() * i) / count]));
     if (model.robotFits(p)) poses.push_back({p.x(), p.y(), 0.1 * i});
   }
   return poses;
@@ -59,9 +61,13 @@ void BM_AStarAcrossLargeOffice(benchmark::State& state) {
   costmap.update(grid);
   // The two reachable cells farthest apart along x.
   const auto& cells = truth.reachableCells();
-  auto byX = [&](std::uint32_t a, std::uint32_t b) { return geometry.cellAt(a).x < geometry.cellAt(b).x; };
-  Vec2 start = geometry.centerOf(geometry.cellAt(*std::min_element(cells.begin(), cells.end(), byX)));
-  Vec2 goal = geometry.centerOf(geometry.cellAt(*std::max_element(cells.begin(), cells.end(), byX)));
+  auto byX = [&](std::uint32_t a, std::uint32_t b) {
+    return geometry.cellAt(a).x < geometry.cellAt(b).x;
+  };
+  Vec2 start =
+      geometry.centerOf(geometry.cellAt(*std::min_element(cells.begin(), cells.end(), byX)));
+  Vec2 goal =
+      geometry.centerOf(geometry.cellAt(*std::max_element(cells.begin(), cells.end(), byX)));
   AStarPlanner planner;
   double length = 0.0;
   for (auto _ : state) {

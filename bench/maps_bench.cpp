@@ -30,13 +30,15 @@ bool loadStates(const std::string& name, bool furnished, cv::Mat& states, GridGe
   try {
     if (name == "large_office") {
       const char* env = std::getenv("ROOMSCOUT_LARGE_OFFICE_MAP");
-      const OccupancyGrid grid = io::loadOccupancyMap(env ? env : "out/large_office/occupancy.yaml");
+      const OccupancyGrid grid =
+          io::loadOccupancyMap(env ? env : "out/large_office/occupancy.yaml");
       states = maps::stateImage(grid);
       geometry = grid.geometry();
       return true;
     }
     const fs::path dir = dataDir() / "room_segmentation";
-    states = io::benchmarkStates(io::readGreyImage(dir / (name + (furnished ? "_furnitures.png" : ".png"))));
+    states = io::benchmarkStates(
+        io::readGreyImage(dir / (name + (furnished ? "_furnitures.png" : ".png"))));
     geometry = GridGeometry(Vec2::Zero(), 0.05, states.cols, states.rows);
     return true;
   } catch (const std::exception&) {
@@ -44,9 +46,9 @@ bool loadStates(const std::string& name, bool furnished, cv::Mat& states, GridGe
   }
 }
 
-const char* const kMaps[] = {"Freiburg101_scan", "Freiburg52_scan", "Freiburg79_scan", "lab_b_scan", "lab_c_scan",
-                             "lab_d_scan",       "lab_intel",       "lab_ipa",         "office_a",   "office_e",
-                             "large_office"};
+const char* const kMaps[] = {"Freiburg101_scan", "Freiburg52_scan", "Freiburg79_scan", "lab_b_scan",
+                             "lab_c_scan",       "lab_d_scan",      "lab_intel",       "lab_ipa",
+                             "office_a",         "office_e",        "large_office"};
 
 void BM_Segmentation(benchmark::State& state, const std::string& name, bool furnished) {
   cv::Mat states;
@@ -87,7 +89,8 @@ void BM_Topology(benchmark::State& state, const std::string& name, bool furnishe
     for (const bool furnished : {false, true}) {
       if (furnished && std::string(name) == "large_office") continue;
       const std::string suffix = std::string(name) + (furnished ? "/furnished" : "");
-      benchmark::RegisterBenchmark(("BM_Segmentation/" + suffix).c_str(), BM_Segmentation, name, furnished)
+      benchmark::RegisterBenchmark(("BM_Segmentation/" + suffix).c_str(), BM_Segmentation, name,
+                                   furnished)
           ->Unit(benchmark::kMillisecond);
       benchmark::RegisterBenchmark(("BM_Topology/" + suffix).c_str(), BM_Topology, name, furnished)
           ->Unit(benchmark::kMillisecond);

@@ -27,7 +27,8 @@ struct Office {
     const auto& cells = truth.reachableCells();
     const int count = 200;
     for (int i = 0; i < count; ++i) {
-      const Vec2 p = truth.geometry().centerOf(truth.geometry().cellAt(cells[(cells.size() * i) / count]));
+      const Vec2 p =
+          truth.geometry().centerOf(truth.geometry().cellAt(cells[(cells.size() * i) / count]));
       if (model.robotFits(p)) poses.push_back({p.x(), p.y(), 0.37 * i});
     }
   }
@@ -51,7 +52,8 @@ const std::vector<std::vector<Eigen::Vector3f>>& officeScans() {
   static const std::vector<std::vector<Eigen::Vector3f>> scans = [] {
     sim::LidarSimulator lidar(office().columns, {}, 1);
     std::vector<std::vector<Eigen::Vector3f>> out;
-    for (std::size_t i = 0; i < 100 && i < office().poses.size(); ++i) out.push_back(toMap(lidar.scan(office().poses[i])));
+    for (std::size_t i = 0; i < 100 && i < office().poses.size(); ++i)
+      out.push_back(toMap(lidar.scan(office().poses[i])));
     return out;
   }();
   return scans;
@@ -82,11 +84,16 @@ void BM_Vlp16RayCastAndInsert(benchmark::State& state) {
   }
   state.counters["map_points"] = static_cast<double>(map.size());
 }
-BENCHMARK(BM_Vlp16RayCastAndInsert)->Unit(benchmark::kMillisecond)->ComputeStatistics("median", [](const std::vector<double>& v) {
-  std::vector<double> s = v;
-  std::nth_element(s.begin(), s.begin() + s.size() / 2, s.end());
-  return s[s.size() / 2];
-})->Repetitions(5)->ReportAggregatesOnly(true);
+BENCHMARK(BM_Vlp16RayCastAndInsert)
+    ->Unit(benchmark::kMillisecond)
+    ->ComputeStatistics("median",
+                        [](const std::vector<double>& v) {
+                          std::vector<double> s = v;
+                          std::nth_element(s.begin(), s.begin() + s.size() / 2, s.end());
+                          return s[s.size() / 2];
+                        })
+    ->Repetitions(5)
+    ->ReportAggregatesOnly(true);
 
 /// Streams state.range(0) scans into the incremental voxel hash; time per scan.
 void BM_StreamVoxelHash(benchmark::State& state) {
@@ -99,9 +106,9 @@ void BM_StreamVoxelHash(benchmark::State& state) {
     size = map.size();
   }
   state.counters["map_points"] = static_cast<double>(size);
-  state.counters["ms_per_scan"] =
-      benchmark::Counter(static_cast<double>(n) * 1e-3, benchmark::Counter::kIsIterationInvariantRate |
-                                                            benchmark::Counter::kInvert);
+  state.counters["ms_per_scan"] = benchmark::Counter(
+      static_cast<double>(n) * 1e-3,
+      benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 BENCHMARK(BM_StreamVoxelHash)->Arg(10)->Arg(100)->Unit(benchmark::kMillisecond);
 
@@ -126,9 +133,9 @@ void BM_StreamPclVoxelGrid(benchmark::State& state) {
     size = map->size();
   }
   state.counters["map_points"] = static_cast<double>(size);
-  state.counters["ms_per_scan"] =
-      benchmark::Counter(static_cast<double>(n) * 1e-3, benchmark::Counter::kIsIterationInvariantRate |
-                                                            benchmark::Counter::kInvert);
+  state.counters["ms_per_scan"] = benchmark::Counter(
+      static_cast<double>(n) * 1e-3,
+      benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 BENCHMARK(BM_StreamPclVoxelGrid)->Arg(10)->Arg(100)->Unit(benchmark::kMillisecond);
 #endif

@@ -53,7 +53,8 @@ void BM_SlamUpdate(benchmark::State& state, const char* mode) {
     slam::SlamOptions options;
     options.mode = mode;
     slam::Slam slam(options, drive.start, 1);
-    for (std::size_t i = 0; i < n && i < drive.scans.size(); ++i) slam.update(drive.scans[i], drive.odometry[i]);
+    for (std::size_t i = 0; i < n && i < drive.scans.size(); ++i)
+      slam.update(drive.scans[i], drive.odometry[i]);
     stats = sim::TimingStats::of(slam.updateTimes_ms());
   }
   state.counters["scans"] = static_cast<double>(stats.count);

@@ -30,7 +30,8 @@ void BM_StrategyDecisionLargeOffice(benchmark::State& state, const std::string& 
 
 const bool registered = [] {
   for (const std::string& name : strategyNames()) {
-    benchmark::RegisterBenchmark(("BM_StrategyDecisionLargeOffice/" + name).c_str(), BM_StrategyDecisionLargeOffice, name)
+    benchmark::RegisterBenchmark(("BM_StrategyDecisionLargeOffice/" + name).c_str(),
+                                 BM_StrategyDecisionLargeOffice, name)
         ->Unit(benchmark::kSecond)
         ->Iterations(1);
   }

@@ -59,8 +59,9 @@ int main(int argc, char** argv) {
   for (double t = 0.0; t < 600.0; t += 0.5) {
     known.unite(mapper.integrate(measure(robot), robot));
     const int m = 20;  // 1 m of unknown border
-    const CellRect crop = CellRect{known.min_x - m, known.min_y - m, known.max_x + m, known.max_y + m}.clippedTo(
-        slam.geometry().width(), slam.geometry().height());
+    const CellRect crop =
+        CellRect{known.min_x - m, known.min_y - m, known.max_x + m, known.max_y + m}.clippedTo(
+            slam.geometry().width(), slam.geometry().height());
     const GridGeometry& g = slam.geometry();
     const OccupancyGrid map = slam.reframed(
         GridGeometry(g.centerOf({crop.min_x, crop.min_y}) - Vec2(0.025, 0.025), g.resolution_m(),
@@ -71,14 +72,16 @@ int main(int argc, char** argv) {
       const auto known_cells = std::count_if(map.states().begin(), map.states().end(),
                                              [](CellState c) { return c != CellState::kUnknown; });
       std::printf("%6.1f s  done: %.1f m^2 known, %d goals\n", t,
-                  known_cells * map.geometry().resolution_m() * map.geometry().resolution_m(), explorer.stats().goals);
+                  known_cells * map.geometry().resolution_m() * map.geometry().resolution_m(),
+                  explorer.stats().goals);
       return 0;
     }
     if (command.kind != ExplorerCommand::Kind::kDrive) continue;
     if (command.new_path) {
       std::printf("%6.1f s  drive to (%.2f, %.2f), %zu waypoints, map %d x %d at (%.2f, %.2f)\n", t,
-                  command.goal_m.x(), command.goal_m.y(), command.path->waypoints_m.size(), map.geometry().width(),
-                  map.geometry().height(), map.geometry().origin_m().x(), map.geometry().origin_m().y());
+                  command.goal_m.x(), command.goal_m.y(), command.path->waypoints_m.size(),
+                  map.geometry().width(), map.geometry().height(), map.geometry().origin_m().x(),
+                  map.geometry().origin_m().y());
     }
     // The toy driver: hop 0.1 m along the path, facing the way it goes.
     const std::vector<Vec2>& w = command.path->waypoints_m;

@@ -18,7 +18,6 @@
 #include <actionlib/client/simple_action_client.h>
 #include <move_base_msgs/MoveBaseAction.h>
 #include <nav_msgs/OccupancyGrid.h>
-#include <nlohmann/json.hpp>
 #include <ros/ros.h>
 #include <rosgraph_msgs/Clock.h>
 #include <sensor_msgs/PointCloud2.h>
@@ -29,6 +28,7 @@
 #include <tf2_ros/buffer.h>
 #include <tf2_ros/transform_listener.h>
 #include <visualization_msgs/MarkerArray.h>
+#include <nlohmann/json.hpp>
 
 #include "roomscout/core/errors.hpp"
 #include "roomscout/experiment/episode_setup.hpp"
@@ -80,8 +80,10 @@ struct ExploreNodeParams {
     if (p.seed < 0) throw OptionError("~seed must be >= 0, not " + std::to_string(p.seed));
     if (!(p.cycle_period_s > 0.0)) throw OptionError("~cycle_period_s must be > 0");
     if (!(p.marker_period_s > 0.0)) throw OptionError("~marker_period_s must be > 0");
-    if (!(p.free_percent >= 0 && p.free_percent < p.occupied_percent && p.occupied_percent <= 100)) {
-      throw OptionError("~free_percent and ~occupied_percent must satisfy 0 <= free < occupied <= 100");
+    if (!(p.free_percent >= 0 && p.free_percent < p.occupied_percent &&
+          p.occupied_percent <= 100)) {
+      throw OptionError(
+          "~free_percent and ~occupied_percent must satisfy 0 <= free < occupied <= 100");
     }
     return p;
   }
@@ -100,11 +102,13 @@ class ExploreNode {
         cloud_(setup_.cloud.map),
         keyframes_(setup_.cloud.keyframes) {
     ros::NodeHandle nh, pn("~");
-    map_sub_ = nh.subscribe("map", 1, &ExploreNode::onMap, this, ros::TransportHints().tcpNoDelay());
+    map_sub_ =
+        nh.subscribe("map", 1, &ExploreNode::onMap, this, ros::TransportHints().tcpNoDelay());
     // roscpp reads /clock on a thread of its own; this subscription only wakes the loop below
     // at each tick, so that with a simulator's clock every cycle comes when due.
-    clock_sub_ = nh.subscribe<rosgraph_msgs::Clock>("/clock", 1, [](const rosgraph_msgs::Clock::ConstPtr&) {},
-                                                    ros::VoidConstPtr(), ros::TransportHints().tcpNoDelay());
+    clock_sub_ = nh.subscribe<rosgraph_msgs::Clock>(
+        "/clock", 1, [](const rosgraph_msgs::Clock::ConstPtr&) {}, ros::VoidConstPtr(),
+        ros::TransportHints().tcpNoDelay());
     points_sub_ = nh.subscribe("points", 2, &ExploreNode::onPoints, this);
     rooms_pub_ = pn.advertise<visualization_msgs::MarkerArray>("rooms", 1, true);
     room_grid_pub_ = pn.advertise<nav_msgs::OccupancyGrid>("room_grid", 1, true);
@@ -151,14 +155,16 @@ class ExploreNode {
   }
 
  private:
-  static ExplorerOptions explorerOptions(const ExploreNodeParams& params, experiment::EpisodeSetup& setup) {
+  static ExplorerOptions explorerOptions(const ExploreNodeParams& params,
+                                         experiment::EpisodeSetup& setup) {
     setup.config.resolve();
     ExplorerOptions options = setup.config.explorer;
     // The simulator's 0 (0.1 % of the world's floor) needs a ground truth a robot lacks.
     if (options.goals.stall_min_new_area_m2 == 0.0) {
       options.goals.stall_min_new_area_m2 = GoalWatchdogOptions{}.stall_min_new_area_m2;
     }
-    if (params.progress_timeout_s >= 0.0) options.goals.no_progress_timeout_s = params.progress_timeout_s;
+    if (params.progress_timeout_s >= 0.0)
+      options.goals.no_progress_timeout_s = params.progress_timeout_s;
     options.all_maps = true;
     options.background_maps = false;  // markers read the maps on this thread
     options.validate();
@@ -166,7 +172,8 @@ class ExploreNode {
   }
 
   void onMap(const nav_msgs::OccupancyGrid::ConstPtr& msg) {
-    if (!params_.map_frame.empty() && !msg->header.frame_id.empty() && msg->header.frame_id != params_.map_frame) {
+    if (!params_.map_frame.empty() && !msg->header.frame_id.empty() &&
+        msg->header.frame_id != params_.map_frame) {
       ROS_ERROR_THROTTLE(10.0, "map in frame '%s', expected '%s' (~map_frame): ignored",
                          msg->header.frame_id.c_str(), params_.map_frame.c_str());
       return;
@@ -180,7 +187,8 @@ class ExploreNode {
     Pose2 base;
     geometry_msgs::TransformStamped sensor;
     try {
-      base = toPose2(tf_.lookupTransform(params_.map_frame, params_.base_frame, msg->header.stamp).transform);
+      base = toPose2(
+          tf_.lookupTransform(params_.map_frame, params_.base_frame, msg->header.stamp).transform);
       sensor = tf_.lookupTransform(params_.map_frame, msg->header.frame_id, msg->header.stamp);
     } catch (const tf2::TransformException& e) {
       ROS_WARN_THROTTLE(10.0, "point cloud skipped: %s", e.what());
@@ -189,9 +197,10 @@ class ExploreNode {
     if (!keyframes_.accept(base)) return;
     const auto& tr = sensor.transform.translation;
     const auto& q = sensor.transform.rotation;
-    const Eigen::Isometry3f T = Eigen::Translation3f(tr.x, tr.y, tr.z) *
-                                Eigen::Quaternionf(static_cast<float>(q.w), static_cast<float>(q.x),
-                                                   static_cast<float>(q.y), static_cast<float>(q.z));
+    const Eigen::Isometry3f T =
+        Eigen::Translation3f(tr.x, tr.y, tr.z) *
+        Eigen::Quaternionf(static_cast<float>(q.w), static_cast<float>(q.x),
+                           static_cast<float>(q.y), static_cast<float>(q.z));
     scratch_points_.clear();
     scratch_points_.reserve(static_cast<std::size_t>(msg->width) * msg->height);
     sensor_msgs::PointCloud2ConstIterator<float> x(*msg, "x"), y(*msg, "y"), z(*msg, "z");
@@ -227,8 +236,8 @@ class ExploreNode {
   void save() {
     if (!grid_) throw InputError(params_.save_dir, "no map received yet: nothing to save");
     if (params_.save_dir.empty()) throw OptionError("~save_dir is empty: nowhere to save");
-    saveMaps(params_.save_dir, *grid_, *explorer_.roomMap(), *explorer_.skeletonMap(), cloud_.points(),
-             cloud_top_m_ > 0.0 ? cloud_top_m_ + 1.0 : 2.5);
+    saveMaps(params_.save_dir, *grid_, *explorer_.roomMap(), *explorer_.skeletonMap(),
+             cloud_.points(), cloud_top_m_ > 0.0 ? cloud_top_m_ + 1.0 : 2.5);
   }
 
   /// One explore cycle: the latest map and pose to the Explorer, its command to move_base.
@@ -238,8 +247,8 @@ class ExploreNode {
     if (map_new_) {
       map_new_ = false;
       try {
-        ReceivedGrid received = fromMsg(*map_msg_, grid_ ? &*grid_ : nullptr, params_.occupied_percent,
-                                        params_.free_percent);
+        ReceivedGrid received = fromMsg(*map_msg_, grid_ ? &*grid_ : nullptr,
+                                        params_.occupied_percent, params_.free_percent);
         if (received.changed) {
           changed_.unite(*received.changed);
         } else {
@@ -254,17 +263,20 @@ class ExploreNode {
     if (!grid_) return;
     Pose2 robot;
     try {
-      robot = toPose2(tf_.lookupTransform(params_.map_frame, params_.base_frame, ros::Time(0)).transform);
+      robot = toPose2(
+          tf_.lookupTransform(params_.map_frame, params_.base_frame, ros::Time(0)).transform);
     } catch (const tf2::TransformException& e) {
       ROS_WARN_THROTTLE(10.0, "no robot pose: %s", e.what());
       return;
     }
-    t = std::max(t, last_update_s_);  // a clock reset (e.g. a restarted simulator) never runs time back
+    t = std::max(
+        t, last_update_s_);  // a clock reset (e.g. a restarted simulator) never runs time back
     if (pending_outcome_) {
       explorer_.report(*pending_outcome_, t);
       pending_outcome_.reset();
     }
-    const std::optional<CellRect> hint = any_changed_ ? std::nullopt : std::optional<CellRect>(changed_);
+    const std::optional<CellRect> hint =
+        any_changed_ ? std::nullopt : std::optional<CellRect>(changed_);
     const ExplorerCommand command = explorer_.update(ExplorerInput(*grid_, robot, t, hint));
     ++cycles_;
     last_update_s_ = t;
@@ -274,7 +286,8 @@ class ExploreNode {
 
     switch (command.kind) {
       case ExplorerCommand::Kind::kDrive:
-        if (!goal_active_ || !sent_goal_ || (*sent_goal_ - command.goal_m).norm() > 1e-6) sendGoal(robot, command.goal_m);
+        if (!goal_active_ || !sent_goal_ || (*sent_goal_ - command.goal_m).norm() > 1e-6)
+          sendGoal(robot, command.goal_m);
         break;
       case ExplorerCommand::Kind::kDone:
         finishExploration(t);
@@ -302,12 +315,13 @@ class ExploreNode {
     goal.target_pose.header.stamp = ros::Time::now();
     const Vec2 d = goal_m - robot.position();
     goal.target_pose.pose = toPoseMsg(Pose2{goal_m.x(), goal_m.y(), std::atan2(d.y(), d.x())});
-    move_base_.sendGoal(goal, [this](const actionlib::SimpleClientGoalState& state,
-                                     const move_base_msgs::MoveBaseResultConstPtr&) { onGoalDone(state); });
+    move_base_.sendGoal(
+        goal, [this](const actionlib::SimpleClientGoalState& state,
+                     const move_base_msgs::MoveBaseResultConstPtr&) { onGoalDone(state); });
     sent_goal_ = goal_m;
     goal_active_ = true;
-    goal_pub_.publish(pointsMarker({goal_m}, "goal", {0.1f, 0.8f, 0.1f, 1.0f}, 0.3, params_.map_frame,
-                                   goal.target_pose.header.stamp));
+    goal_pub_.publish(pointsMarker({goal_m}, "goal", {0.1f, 0.8f, 0.1f, 1.0f}, 0.3,
+                                   params_.map_frame, goal.target_pose.header.stamp));
   }
 
   void cancelGoal() {
@@ -337,7 +351,8 @@ class ExploreNode {
   void publishMaps(double t, const Pose2& robot) {
     const int room_updates = static_cast<int>(explorer_.roomMap()->updateTimes_ms().size());
     const int skeleton_updates = static_cast<int>(explorer_.skeletonMap()->updateTimes_ms().size());
-    if (room_updates != published_room_updates_ || skeleton_updates != published_skeleton_updates_) {
+    if (room_updates != published_room_updates_ ||
+        skeleton_updates != published_skeleton_updates_) {
       published_room_updates_ = room_updates;
       published_skeleton_updates_ = skeleton_updates;
       publishRoomsAndSkeleton();
@@ -357,14 +372,15 @@ class ExploreNode {
     const std::size_t stride = candidates.size() / 2000 + 1;
     std::vector<Vec2> shown;
     for (std::size_t i = 0; i < candidates.size(); i += stride) shown.push_back(candidates[i]);
-    frontier_pub_.publish(pointsMarker(shown, "frontiers", {0.9f, 0.2f, 0.9f, 0.9f}, 0.12, params_.map_frame,
-                                       ros::Time(t)));
+    frontier_pub_.publish(pointsMarker(shown, "frontiers", {0.9f, 0.2f, 0.9f, 0.9f}, 0.12,
+                                       params_.map_frame, ros::Time(t)));
     publishStatus(t, robot);
   }
 
   void publishRoomsAndSkeleton() {
     const ros::Time stamp = ros::Time::now();
-    if (const SemanticMap* rooms = explorer_.roomMap()->semanticMap(); rooms != nullptr && !rooms->labels().empty()) {
+    if (const SemanticMap* rooms = explorer_.roomMap()->semanticMap();
+        rooms != nullptr && !rooms->labels().empty()) {
       rooms_pub_.publish(roomMarkers(*rooms, params_.map_frame, stamp));
       nav_msgs::OccupancyGrid grid;
       labelsToMsg(rooms->labels(), rooms->geometry(), grid);
@@ -372,7 +388,8 @@ class ExploreNode {
       grid.header.stamp = stamp;
       room_grid_pub_.publish(grid);
     }
-    skeleton_pub_.publish(skeletonMarkers(explorer_.skeletonMap()->topologicalMap(), params_.map_frame, stamp));
+    skeleton_pub_.publish(
+        skeletonMarkers(explorer_.skeletonMap()->topologicalMap(), params_.map_frame, stamp));
   }
 
   void publishStatus(double t, const std::optional<Pose2>& robot) {
@@ -412,7 +429,8 @@ class ExploreNode {
   double cloud_top_m_ = 0.0;
 
   ros::Subscriber map_sub_, points_sub_, clock_sub_;
-  ros::Publisher rooms_pub_, room_grid_pub_, skeleton_pub_, frontier_pub_, goal_pub_, status_pub_, cycle_pub_;
+  ros::Publisher rooms_pub_, room_grid_pub_, skeleton_pub_, frontier_pub_, goal_pub_, status_pub_,
+      cycle_pub_;
   ros::ServiceServer save_srv_;
 
   nav_msgs::OccupancyGrid::ConstPtr map_msg_;
@@ -427,7 +445,7 @@ class ExploreNode {
   std::optional<Vec2> sent_goal_;
   std::string reason_;
   int published_room_updates_ = -1, published_skeleton_updates_ = -1;
-  long cycles_ = 0;  ///< Explorer updates so far
+  long cycles_ = 0;      ///< Explorer updates so far
   ros::Time caught_up_;  ///< the last time published on ~cycle
 };
 
@@ -446,8 +464,8 @@ int main(int argc, char** argv) {
     params = ros1::ExploreNodeParams::load(pn);
     experiment::RunSettings settings;
     settings.config_file = params.config;
-    experiment::EpisodeSetup setup =
-        experiment::makeEpisodeSetup(params.method, static_cast<std::uint64_t>(params.seed), settings);
+    experiment::EpisodeSetup setup = experiment::makeEpisodeSetup(
+        params.method, static_cast<std::uint64_t>(params.seed), settings);
     node = std::make_unique<ros1::ExploreNode>(params, std::move(setup));
   } catch (const std::exception& e) {
     std::cerr << "roomscout_explore_node: " << e.what() << "\n";

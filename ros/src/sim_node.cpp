@@ -444,7 +444,9 @@ SimNode::SimNode(const NodeParameters& params, Scenario scenario)
   if (!params_.sync_topic.empty()) {
     sync_sub_ = nh_.subscribe<std_msgs::Time>(
         params_.sync_topic, 10,
-        [this](const std_msgs::Time::ConstPtr& m) { acknowledged_ = std::max(acknowledged_, m->data); },
+        [this](const std_msgs::Time::ConstPtr& m) {
+          acknowledged_ = std::max(acknowledged_, m->data);
+        },
         ros::VoidConstPtr(), ros::TransportHints().tcpNoDelay());
   }
   status_pub_ = pnh_.advertise<std_msgs::String>("status", 1, true);
@@ -804,9 +806,10 @@ bool SimNode::replan(std::string& why) {
 bool SimNode::pathBlocked() const {
   if (!follower_.hasPath()) return false;
   // Beyond the laser's range a new scan cannot have blocked the path.
-  const double horizon_m = config_.laser.range_max_m + config_.explorer.costmap.lethalRadius_m() + 0.5;
-  return pathBlockedAhead(grid_, follower_.path().waypoints_m, follower_.progressIndex(), robot_.pose().position(),
-                          horizon_m, lethal_disc_);
+  const double horizon_m =
+      config_.laser.range_max_m + config_.explorer.costmap.lethalRadius_m() + 0.5;
+  return pathBlockedAhead(grid_, follower_.path().waypoints_m, follower_.progressIndex(),
+                          robot_.pose().position(), horizon_m, lethal_disc_);
 }
 
 void SimNode::monitorGoal(const CellRect& changed, bool scanned, const ros::Time& stamp) {

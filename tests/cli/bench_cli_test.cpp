@@ -15,8 +15,8 @@
 #include <string>
 #include <vector>
 
-#include "two_room_world.hpp"
 #include "roomscout/experiment/result_record.hpp"
+#include "two_room_world.hpp"
 
 namespace fs = std::filesystem;
 
@@ -41,7 +41,6 @@ class BenchCliTest : public ::testing::Test {
     s << in.rdbuf();
     return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, s.str()};
   }
-
 
   std::string world() const { return (dir_ / "tiny" / "rooms.yaml").string(); }
 

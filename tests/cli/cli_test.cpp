@@ -32,7 +32,8 @@ class CliTest : public ::testing::Test {
 
   CommandResult run(const std::string& args) {
     const fs::path log = dir_ / "log.txt";
-    const std::string cmd = std::string(ROOMSCOUT_BINARY) + " " + args + " > " + log.string() + " 2>&1";
+    const std::string cmd =
+        std::string(ROOMSCOUT_BINARY) + " " + args + " > " + log.string() + " 2>&1";
     const int status = std::system(cmd.c_str());
     CommandResult r;
     r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
@@ -71,15 +72,18 @@ class CliTest : public ::testing::Test {
 TEST_F(CliTest, ExploreMapServerWorldWritesEveryOutput) {
   const fs::path map = writeTwoRoomMap();
   const fs::path out = dir_ / "out";
-  const CommandResult r = run("explore --world " + map.string() + " --method nearest_frontier --seed 3 --out " + out.string());
+  const CommandResult r = run("explore --world " + map.string() +
+                              " --method nearest_frontier --seed 3 --out " + out.string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  for (const char* f : {"occupancy.pgm", "occupancy.yaml", "trajectory.csv", "metrics.json", "run.png"}) {
+  for (const char* f :
+       {"occupancy.pgm", "occupancy.yaml", "trajectory.csv", "metrics.json", "run.png"}) {
     EXPECT_TRUE(fs::exists(out / f)) << f;
   }
   std::ifstream in(out / "metrics.json");
   const nlohmann::json m = nlohmann::json::parse(in);
-  for (const char* key : {"world", "method", "seed", "exploration_rate", "t98_s", "l98_m", "t_done_s", "l_done_m",
-                          "revisits", "wall_time_s", "update_ms", "curve", "options"}) {
+  for (const char* key :
+       {"world", "method", "seed", "exploration_rate", "t98_s", "l98_m", "t_done_s", "l_done_m",
+        "revisits", "wall_time_s", "update_ms", "curve", "options"}) {
     EXPECT_TRUE(m.contains(key)) << key;
   }
   EXPECT_EQ(m["world"], "rooms");
@@ -97,7 +101,8 @@ TEST_F(CliTest, ExploreMapServerWorldWritesEveryOutput) {
 TEST_F(CliTest, SameSeedGivesSameMetricsFile) {
   const fs::path map = writeTwoRoomMap();
   auto metrics = [&](const std::string& out) {
-    const CommandResult r = run("explore --world " + map.string() + " --seed 9 --out " + (dir_ / out).string());
+    const CommandResult r =
+        run("explore --world " + map.string() + " --seed 9 --out " + (dir_ / out).string());
     EXPECT_EQ(r.exit_code, 0) << r.output;
     std::ifstream in(dir_ / out / "metrics.json");
     nlohmann::json m = nlohmann::json::parse(in);
@@ -110,8 +115,10 @@ TEST_F(CliTest, SameSeedGivesSameMetricsFile) {
 
 TEST_F(CliTest, ConfigFileOptionsAreApplied) {
   const fs::path map = writeTwoRoomMap();
-  const fs::path cfg = write("cfg.yaml", "laser:\n  num_beams: 180\nnearest_frontier:\n  potential_scale: 2.0\n");
-  const CommandResult r = run("explore --world " + map.string() + " --config " + cfg.string() + " --out " + (dir_ / "o").string());
+  const fs::path cfg =
+      write("cfg.yaml", "laser:\n  num_beams: 180\nnearest_frontier:\n  potential_scale: 2.0\n");
+  const CommandResult r = run("explore --world " + map.string() + " --config " + cfg.string() +
+                              " --out " + (dir_ / "o").string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
   std::ifstream in(dir_ / "o" / "metrics.json");
   const nlohmann::json m = nlohmann::json::parse(in);
@@ -119,9 +126,9 @@ TEST_F(CliTest, ConfigFileOptionsAreApplied) {
   EXPECT_EQ(m["options"]["nearest_frontier"]["potential_scale"], 2.0);
 }
 
-
 TEST_F(CliTest, MissingWorldFile) {
-  const CommandResult r = run("explore --world " + (dir_ / "nope.yaml").string() + " --out " + (dir_ / "o").string());
+  const CommandResult r =
+      run("explore --world " + (dir_ / "nope.yaml").string() + " --out " + (dir_ / "o").string());
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.output.find("nope.yaml"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("no such file"), std::string::npos) << r.output;
@@ -136,9 +143,10 @@ TEST_F(CliTest, MalformedWorldFile) {
 }
 
 TEST_F(CliTest, WorldFileWithUnknownKey) {
-  const fs::path w = write("typo.yaml",
-                           "name: typo\nstart: [1, 1, 0]\nwalls:\n  - [[0, 0], [4, 0], [4, 4], [0, 4], [0, 0]]\n"
-                           "furniture:\n  - {name: box, box: {center: [2, 2], size: [1, 1]}, hight_m: 1}\n");
+  const fs::path w =
+      write("typo.yaml",
+            "name: typo\nstart: [1, 1, 0]\nwalls:\n  - [[0, 0], [4, 0], [4, 4], [0, 4], [0, 0]]\n"
+            "furniture:\n  - {name: box, box: {center: [2, 2], size: [1, 1]}, hight_m: 1}\n");
   const CommandResult r = run("explore --world " + w.string() + " --out " + (dir_ / "o").string());
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.output.find("typo.yaml"), std::string::npos) << r.output;
@@ -156,7 +164,8 @@ TEST_F(CliTest, ImageWithNoFreePixel) {
 
 TEST_F(CliTest, StartInsideAWallOrOutsideTheMap) {
   const fs::path map = writeTwoRoomMap();
-  CommandResult r = run("explore --world " + map.string() + " --start 0.02,2.0,0 --out " + (dir_ / "o").string());
+  CommandResult r =
+      run("explore --world " + map.string() + " --start 0.02,2.0,0 --out " + (dir_ / "o").string());
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.output.find("rooms.yaml"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("inside or too close"), std::string::npos) << r.output;
@@ -169,7 +178,8 @@ TEST_F(CliTest, StartInsideAWallOrOutsideTheMap) {
 }
 
 TEST_F(CliTest, UnknownMethodListsKnownOnes) {
-  const CommandResult r = run("explore --world small_house --method bogus --out " + (dir_ / "o").string());
+  const CommandResult r =
+      run("explore --world small_house --method bogus --out " + (dir_ / "o").string());
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.output.find("bogus"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("nearest_frontier"), std::string::npos) << r.output;
@@ -177,33 +187,39 @@ TEST_F(CliTest, UnknownMethodListsKnownOnes) {
 
 TEST_F(CliTest, UnknownOptionInConfig) {
   const fs::path cfg = write("cfg.yaml", "laser:\n  num_beam: 180\n");
-  const CommandResult r = run("explore --world small_house --config " + cfg.string() + " --out " + (dir_ / "o").string());
+  const CommandResult r = run("explore --world small_house --config " + cfg.string() + " --out " +
+                              (dir_ / "o").string());
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.output.find("cfg.yaml"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("num_beam"), std::string::npos) << r.output;
 }
 
 TEST_F(CliTest, UnknownNoiseProfileOrSlamModeNamesTheKeyAndLeavesNoOutputDirectory) {
-  for (const std::string& text : {std::string("noise:\n  profile: loud\n"), std::string("slam:\n  mode: gmapping\n")}) {
+  for (const std::string& text :
+       {std::string("noise:\n  profile: loud\n"), std::string("slam:\n  mode: gmapping\n")}) {
     const fs::path cfg = write("cfg.yaml", text);
     const fs::path out = dir_ / "new" / "out";
-    const CommandResult r = run("explore --world small_house --config " + cfg.string() + " --out " + out.string());
+    const CommandResult r =
+        run("explore --world small_house --config " + cfg.string() + " --out " + out.string());
     EXPECT_EQ(r.exit_code, 2) << r.output;
     EXPECT_NE(r.output.find("cfg.yaml"), std::string::npos) << r.output;
-    EXPECT_NE(r.output.find(text.find("loud") != std::string::npos ? "noise.profile" : "slam.mode"), std::string::npos)
+    EXPECT_NE(r.output.find(text.find("loud") != std::string::npos ? "noise.profile" : "slam.mode"),
+              std::string::npos)
         << r.output;
     // The failed run removed the directory it had created; the existing parent stays.
     EXPECT_FALSE(fs::exists(out)) << r.output;
   }
   // A directory that existed before the run is never removed.
   fs::create_directories(dir_ / "kept");
-  const CommandResult r = run("explore --world small_house --method bogus --out " + (dir_ / "kept").string());
+  const CommandResult r =
+      run("explore --world small_house --method bogus --out " + (dir_ / "kept").string());
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_TRUE(fs::is_directory(dir_ / "kept"));
 }
 
 TEST_F(CliTest, NegativeSeedIsRefused) {
-  const CommandResult r = run("explore --world small_house --seed -5 --out " + (dir_ / "o").string());
+  const CommandResult r =
+      run("explore --world small_house --seed -5 --out " + (dir_ / "o").string());
   EXPECT_NE(r.exit_code, 0);
   EXPECT_NE(r.output.find("--seed"), std::string::npos) << r.output;
   EXPECT_FALSE(fs::exists(dir_ / "o"));
@@ -211,7 +227,8 @@ TEST_F(CliTest, NegativeSeedIsRefused) {
 
 TEST_F(CliTest, OutputDirectoryNotWritable) {
   write("file", "x");
-  const CommandResult r = run("explore --world small_house --out " + (dir_ / "file" / "sub").string());
+  const CommandResult r =
+      run("explore --world small_house --out " + (dir_ / "file" / "sub").string());
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.output.find("file"), std::string::npos) << r.output;
 }

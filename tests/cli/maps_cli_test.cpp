@@ -27,14 +27,17 @@ class MapsCliTest : public ::testing::Test {
 
   std::pair<int, std::string> run(const std::string& args) {
     const fs::path log = dir_ / "log.txt";
-    const int status = std::system((std::string(ROOMSCOUT_BINARY) + " " + args + " > " + log.string() + " 2>&1").c_str());
+    const int status = std::system(
+        (std::string(ROOMSCOUT_BINARY) + " " + args + " > " + log.string() + " 2>&1").c_str());
     std::ifstream in(log);
     std::stringstream s;
     s << in.rdbuf();
     return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, s.str()};
   }
 
-  void write(const std::string& name, const std::string& text) { std::ofstream(dir_ / name) << text; }
+  void write(const std::string& name, const std::string& text) {
+    std::ofstream(dir_ / name) << text;
+  }
 
   /// Two 3 x 4 m rooms joined by a 0.9 m door, as a map_server map.
   cv::Mat twoRoomImage() {
@@ -53,36 +56,43 @@ class MapsCliTest : public ::testing::Test {
 
 TEST_F(MapsCliTest, MapsBuildsBothMapsFromAMapServerMap) {
   cv::imwrite((dir_ / "rooms.pgm").string(), twoRoomImage());
-  write("rooms.yaml", "image: rooms.pgm\nresolution: 0.05\norigin: [1.0, -2.0, 0.0]\nnegate: 0\n"
-                      "occupied_thresh: 0.65\nfree_thresh: 0.196\n");
-  const auto [code, output] = run("maps --map " + (dir_ / "rooms.yaml").string() + " --out " + (dir_ / "out").string());
+  write("rooms.yaml",
+        "image: rooms.pgm\nresolution: 0.05\norigin: [1.0, -2.0, 0.0]\nnegate: 0\n"
+        "occupied_thresh: 0.65\nfree_thresh: 0.196\n");
+  const auto [code, output] =
+      run("maps --map " + (dir_ / "rooms.yaml").string() + " --out " + (dir_ / "out").string());
   ASSERT_EQ(code, 0) << output;
-  for (const char* f : {"topology.json", "topology.png", "semantic.json", "semantic.png", "semantic_labels.png"}) {
+  for (const char* f :
+       {"topology.json", "topology.png", "semantic.json", "semantic.png", "semantic_labels.png"}) {
     EXPECT_TRUE(fs::exists(dir_ / "out" / f)) << f;
   }
   std::ifstream in(dir_ / "out" / "semantic.json");
   const nlohmann::json j = nlohmann::json::parse(in);
   EXPECT_EQ(j["regions"].size(), 2u);
   EXPECT_DOUBLE_EQ(j["origin"][0].get<double>(), 1.0);
-  const cv::Mat labels = cv::imread((dir_ / "out" / "semantic_labels.png").string(), cv::IMREAD_UNCHANGED);
+  const cv::Mat labels =
+      cv::imread((dir_ / "out" / "semantic_labels.png").string(), cv::IMREAD_UNCHANGED);
   EXPECT_EQ(labels.type(), CV_16U);
   EXPECT_EQ(labels.size(), cv::Size(124, 84));
 }
 
 TEST_F(MapsCliTest, MapsRejectsAMalformedMap) {
   write("bad.yaml", "image: nothing.pgm\nresolution: -1\norigin: [0, 0, 0]\n");
-  auto [code, output] = run("maps --map " + (dir_ / "bad.yaml").string() + " --out " + (dir_ / "out").string());
+  auto [code, output] =
+      run("maps --map " + (dir_ / "bad.yaml").string() + " --out " + (dir_ / "out").string());
   EXPECT_EQ(code, 2);
   EXPECT_NE(output.find("bad.yaml"), std::string::npos) << output;
   EXPECT_NE(output.find("error"), std::string::npos) << output;
 
   write("garbage.pgm", "this is not an image");
   write("garbage.yaml", "image: garbage.pgm\nresolution: 0.05\norigin: [0, 0, 0]\n");
-  std::tie(code, output) = run("maps --map " + (dir_ / "garbage.yaml").string() + " --out " + (dir_ / "out").string());
+  std::tie(code, output) =
+      run("maps --map " + (dir_ / "garbage.yaml").string() + " --out " + (dir_ / "out").string());
   EXPECT_EQ(code, 2);
   EXPECT_NE(output.find("garbage"), std::string::npos) << output;
 
-  std::tie(code, output) = run("maps --map " + (dir_ / "missing.yaml").string() + " --out " + (dir_ / "out").string());
+  std::tie(code, output) =
+      run("maps --map " + (dir_ / "missing.yaml").string() + " --out " + (dir_ / "out").string());
   EXPECT_EQ(code, 2);
   EXPECT_NE(output.find("missing.yaml"), std::string::npos) << output;
 }
@@ -97,18 +107,21 @@ TEST_F(MapsCliTest, SegmentEvalScoresTwoRoomsNearOneHundredPercent) {
   cv::Mat gt = plain.clone();
   gt(cv::Range(33, 51), cv::Range(61, 63)).setTo(0);  // the door closed: the border line
   cv::imwrite((data / "two_gt_segmentation.png").string(), gt);
-  const auto [code, output] = run("segment-eval --dataset " + data.string() + " --out " + (dir_ / "eval").string());
+  const auto [code, output] =
+      run("segment-eval --dataset " + data.string() + " --out " + (dir_ / "eval").string());
   ASSERT_EQ(code, 0) << output;
   EXPECT_NE(output.find("two"), std::string::npos);
   std::ifstream in(dir_ / "eval" / "results.json");
   const nlohmann::json j = nlohmann::json::parse(in);
   EXPECT_NEAR(j["summary"]["plain"]["recall"].get<double>(), 1.0, 0.01);
-  EXPECT_NEAR(j["summary"]["plain"]["precision"].get<double>(), 1.0, 0.01);  // door cells: in no room
+  EXPECT_NEAR(j["summary"]["plain"]["precision"].get<double>(), 1.0,
+              0.01);  // door cells: in no room
   EXPECT_EQ(j["maps"][0]["segments"].get<int>(), 2) << j.dump();
 }
 
 TEST_F(MapsCliTest, SegmentEvalRejectsAFolderWithoutMaps) {
-  const auto [code, output] = run("segment-eval --dataset " + (dir_ / "none").string() + " --out " + (dir_ / "e").string());
+  const auto [code, output] =
+      run("segment-eval --dataset " + (dir_ / "none").string() + " --out " + (dir_ / "e").string());
   EXPECT_EQ(code, 2);
   EXPECT_NE(output.find("none"), std::string::npos) << output;
 }
@@ -116,9 +129,11 @@ TEST_F(MapsCliTest, SegmentEvalRejectsAFolderWithoutMaps) {
 TEST_F(MapsCliTest, ExploreWritesTopologyAndRooms) {
   const fs::path out = dir_ / "run";
   const auto [code, output] =
-      run("explore --world small_house --method nearest_frontier --seed 1 --max-time 60 --out " + out.string());
+      run("explore --world small_house --method nearest_frontier --seed 1 --max-time 60 --out " +
+          out.string());
   ASSERT_EQ(code, 0) << output;
-  for (const char* f : {"topology.json", "topology.png", "semantic.json", "semantic.png", "semantic_labels.png"}) {
+  for (const char* f :
+       {"topology.json", "topology.png", "semantic.json", "semantic.png", "semantic_labels.png"}) {
     EXPECT_TRUE(fs::exists(out / f)) << f;
   }
   std::ifstream in(out / "metrics.json");

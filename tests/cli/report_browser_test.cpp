@@ -22,8 +22,8 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "../plots/browser_support.hpp"
-#include "two_room_world.hpp"
 #include "roomscout/maps/semantic_map.hpp"
+#include "two_room_world.hpp"
 
 namespace fs = std::filesystem;
 
@@ -99,7 +99,6 @@ class ReportBrowserTest : public ::testing::Test {
         (std::string(ROOMSCOUT_BINARY) + " " + args + " > " + log.string() + " 2>&1").c_str());
     return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, readFile(log)};
   }
-
 
   /// Bench (2 methods x 2 seeds, at most 60 s simulated each) and report into dir_/report.
   void benchAndReport() {

@@ -31,7 +31,8 @@ TEST(RemapCells, MovesEveryValueByTheCellOffsetOfTheOrigins) {
   const GridGeometry cropped(from.origin_m() + Vec2(4 * 0.05, 2 * 0.05), 0.05, 10, 10);
   const std::vector<int> in = remapCells(values, from, cropped, -1);
   for (int y = 0; y < 10; ++y) {
-    for (int x = 0; x < 10; ++x) EXPECT_EQ(in[cropped.index(Cell{x, y})], values[from.index(Cell{x + 4, y + 2})]);
+    for (int x = 0; x < 10; ++x)
+      EXPECT_EQ(in[cropped.index(Cell{x, y})], values[from.index(Cell{x + 4, y + 2})]);
   }
 }
 
@@ -42,11 +43,14 @@ TEST(RemapCells, AnotherResolutionTakesTheOldCellUnderEachCentreAndBadInputGives
   const GridGeometry fine({0.0, 0.0}, 0.05, 8, 8);
   const std::vector<std::uint8_t> out = remapCells(marks, from, fine);
   for (int y = 0; y < 8; ++y) {
-    for (int x = 0; x < 8; ++x) EXPECT_EQ(out[fine.index(Cell{x, y})], (x / 2 == 1 && y / 2 == 2) ? 1 : 0);
+    for (int x = 0; x < 8; ++x)
+      EXPECT_EQ(out[fine.index(Cell{x, y})], (x / 2 == 1 && y / 2 == 2) ? 1 : 0);
   }
   // Values never laid on `from` (empty, or of another size) carry nothing over.
-  EXPECT_EQ(remapCells(std::vector<std::uint8_t>{}, from, fine, std::uint8_t{7}), std::vector<std::uint8_t>(64, 7));
-  EXPECT_EQ(remapCells(std::vector<std::uint8_t>(5, 1), from, fine), std::vector<std::uint8_t>(64, 0));
+  EXPECT_EQ(remapCells(std::vector<std::uint8_t>{}, from, fine, std::uint8_t{7}),
+            std::vector<std::uint8_t>(64, 7));
+  EXPECT_EQ(remapCells(std::vector<std::uint8_t>(5, 1), from, fine),
+            std::vector<std::uint8_t>(64, 0));
 }
 
 TEST(GeometryWatch, ReportsThePreviousGeometryOnlyWhenItChanged) {

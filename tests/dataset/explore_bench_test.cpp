@@ -1,8 +1,9 @@
 // Exploration of real maps made elsewhere (../shared/data, found through ROOMSCOUT_DATA_DIR):
-// the Explore-Bench maps and a HouseExpo plan, read as map_server worlds. These maps are not in the repository.
-// Every method that ends by itself there explores each map to 98 %; rrt and improved_rrt are
-// left out for time (about 6 s an episode; improved_rrt does not end on "loop": a corner the
-// robot never comes within laser range of stays a frontier, and its end test keeps waiting).
+// the Explore-Bench maps and a HouseExpo plan, read as map_server worlds. These maps are not in the
+// repository. Every method that ends by itself there explores each map to 98 %; rrt and
+// improved_rrt are left out for time (about 6 s an episode; improved_rrt does not end on "loop": a
+// corner the robot never comes within laser range of stays a frontier, and its end test keeps
+// waiting).
 
 #include <gtest/gtest.h>
 
@@ -43,19 +44,19 @@ TEST_P(ExploreBenchMaps, ExploresAtLeast98PercentAndEnds) {
   const auto& [map, method] = GetParam();
   const fs::path yaml = dataDir() / "floorplans" / "explore_bench" / (map + ".yaml");
   // The data set is part of the test environment: a missing one is a failure, not a skip.
-  ASSERT_TRUE(fs::exists(yaml)) << "set ROOMSCOUT_DATA_DIR to the shared data folder; not found: " << yaml;
+  ASSERT_TRUE(fs::exists(yaml)) << "set ROOMSCOUT_DATA_DIR to the shared data folder; not found: "
+                                << yaml;
   const sim::EpisodeResult r = explore(yaml, method, 1);
   EXPECT_GE(r.exploration_rate, 0.98) << map << " " << method;
   EXPECT_FALSE(r.timed_out) << map << " " << method;
 }
 
-INSTANTIATE_TEST_SUITE_P(Maps, ExploreBenchMaps,
-                         ::testing::Combine(::testing::Values("corner", "corridor", "loop", "loop_with_corridor",
-                                                              "room", "room_with_corner"),
-                                            ::testing::Values("nearest_frontier", "mmpf", "topo", "semantic")),
-                         [](const auto& info) {
-                           return std::get<0>(info.param) + "_" + std::get<1>(info.param);
-                         });
+INSTANTIATE_TEST_SUITE_P(
+    Maps, ExploreBenchMaps,
+    ::testing::Combine(::testing::Values("corner", "corridor", "loop", "loop_with_corridor", "room",
+                                         "room_with_corner"),
+                       ::testing::Values("nearest_frontier", "mmpf", "topo", "semantic")),
+    [](const auto& info) { return std::get<0>(info.param) + "_" + std::get<1>(info.param); });
 
 // HouseExpo plans where semantic used to stop short: 1dfb7bd5 (38 m^2, seed 1) ended at 97 %
 // with a 0.7 m^2 wedge of floor seen past a door jamb taken for a pocket
@@ -68,7 +69,8 @@ class HouseExpoPlans : public ::testing::TestWithParam<std::tuple<std::string, i
 TEST_P(HouseExpoPlans, SemanticExploresAtLeast98PercentAndEnds) {
   const auto& [plan, seed] = GetParam();
   const fs::path yaml = dataDir() / "floorplans" / "houseexpo" / (plan + ".yaml");
-  ASSERT_TRUE(fs::exists(yaml)) << "set ROOMSCOUT_DATA_DIR to the shared data folder; not found: " << yaml;
+  ASSERT_TRUE(fs::exists(yaml)) << "set ROOMSCOUT_DATA_DIR to the shared data folder; not found: "
+                                << yaml;
   const sim::EpisodeResult r = explore(yaml, "semantic", static_cast<std::uint64_t>(seed));
   EXPECT_GE(r.exploration_rate, 0.98);
   EXPECT_FALSE(r.timed_out);

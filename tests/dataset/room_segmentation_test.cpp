@@ -33,11 +33,14 @@ Means evaluate(bool furnished) {
   Means m;
   for (const io::SegmentationDatasetMap& map : io::listSegmentationDataset(segmentationDir())) {
     if (furnished && !map.furnished_png) continue;
-    const cv::Mat states = io::benchmarkStates(io::readGreyImage(furnished ? *map.furnished_png : map.plain_png));
-    const SegmentationScore s = scoreSegmentation(segmenter.segment(states, 0.05).labels,
-                                                  groundTruthRooms(io::readGreyImage(map.ground_truth_png)));
+    const cv::Mat states =
+        io::benchmarkStates(io::readGreyImage(furnished ? *map.furnished_png : map.plain_png));
+    const SegmentationScore s =
+        scoreSegmentation(segmenter.segment(states, 0.05).labels,
+                          groundTruthRooms(io::readGreyImage(map.ground_truth_png)));
     // Every map yields a usable skeleton graph too.
-    const TopologicalMap topo = builder.build(states, GridGeometry(Vec2::Zero(), 0.05, states.cols, states.rows), nullptr);
+    const TopologicalMap topo =
+        builder.build(states, GridGeometry(Vec2::Zero(), 0.05, states.cols, states.rows), nullptr);
     EXPECT_GT(topo.edges().size(), 5u) << map.name;
     EXPECT_GT(s.recall, 0.8) << map.name;
     EXPECT_GT(s.precision, 0.75) << map.name;
@@ -54,7 +57,8 @@ class RoomSegmentationDataset : public ::testing::Test {
  protected:
   void SetUp() override {
     // The data set is part of the test environment: a missing one is a failure, not a skip.
-    ASSERT_NE(std::getenv("ROOMSCOUT_DATA_DIR"), nullptr) << "set ROOMSCOUT_DATA_DIR to the shared data folder";
+    ASSERT_NE(std::getenv("ROOMSCOUT_DATA_DIR"), nullptr)
+        << "set ROOMSCOUT_DATA_DIR to the shared data folder";
     ASSERT_TRUE(fs::is_directory(segmentationDir())) << "not found: " << segmentationDir();
   }
 };

@@ -28,7 +28,8 @@ std::string slurp(const fs::path& file) {
 class RecordedEpisodeTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("roomscout_recorded_" + std::to_string(std::random_device{}()));
+    dir_ = fs::temp_directory_path() /
+           ("roomscout_recorded_" + std::to_string(std::random_device{}()));
   }
   void TearDown() override { fs::remove_all(dir_); }
 
@@ -52,8 +53,8 @@ TEST_F(RecordedEpisodeTest, MapsBuiltInTheBackgroundAreThoseBuiltAtOnce) {
     SCOPED_TRACE(method);
     const RecordedEpisode at_once = run(method, false, dir_ / method / "at_once");
     const RecordedEpisode background = run(method, true, dir_ / method / "background");
-    for (const char* file : {"pointcloud.pcd", "topology.json", "semantic.json", "semantic_labels.png",
-                             "occupancy.pgm", "trajectory.csv"}) {
+    for (const char* file : {"pointcloud.pcd", "topology.json", "semantic.json",
+                             "semantic_labels.png", "occupancy.pgm", "trajectory.csv"}) {
       const std::string a = slurp(dir_ / method / "at_once" / file);
       EXPECT_FALSE(a.empty()) << file;
       EXPECT_TRUE(a == slurp(dir_ / method / "background" / file)) << file << " differs";

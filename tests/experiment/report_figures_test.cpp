@@ -17,12 +17,12 @@
 
 #include <opencv2/imgcodecs.hpp>
 
+#include "../cli/two_room_world.hpp"
 #include "roomscout/experiment/bench_runner.hpp"
 #include "roomscout/experiment/oracle_references.hpp"
 #include "roomscout/experiment/report.hpp"
 #include "roomscout/experiment/report_writer.hpp"
 #include "roomscout/io/atomic_file.hpp"
-#include "../cli/two_room_world.hpp"
 
 namespace roomscout::experiment {
 namespace {
@@ -246,11 +246,12 @@ TEST(ReportWriter, WritesTablesFiguresAndPageFromABench) {
   // The page holds every table and every figure, inline.
   const std::string html = io::readFile(dir / "report" / "report.html");
   EXPECT_EQ(count(html, "<table class=\"report-table\">"), 5u);  // I, revisits, oracle, II, III
-  EXPECT_EQ(count(html, "<figure class=\"report-figure\">"), 5u);  // Fig. 5-7, revisits (run, to T98)
-  for (const char* part :
-       {"Table I: exploration time", "Revisits", "Oracle reference", "Table II: map types",
-        "Table III: storage", "Fig. 5, rooms", "Fig. 6, rooms", "Fig. 7, rooms",
-        "Room revisits per method", "Room revisits up to T98 per method", "tiny (1 world) L98 / oracle"}) {
+  EXPECT_EQ(count(html, "<figure class=\"report-figure\">"),
+            5u);  // Fig. 5-7, revisits (run, to T98)
+  for (const char* part : {"Table I: exploration time", "Revisits", "Oracle reference",
+                           "Table II: map types", "Table III: storage", "Fig. 5, rooms",
+                           "Fig. 6, rooms", "Fig. 7, rooms", "Room revisits per method",
+                           "Room revisits up to T98 per method", "tiny (1 world) L98 / oracle"}) {
     EXPECT_TRUE(contains(html, part)) << part;
   }
   EXPECT_TRUE(contains(html, rate_svg.substr(rate_svg.find("<svg"), 200)));

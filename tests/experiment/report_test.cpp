@@ -82,11 +82,13 @@ TEST(Report, Table1HoldsMeansSdAndSuccessRates) {
 
   const std::string csv = table1Csv(report);
   // No oracle tours attached: their columns are empty (see report_figures_test.cpp).
-  EXPECT_TRUE(contains(csv, "small_house,0,1,rrt,RRT,3,3,1,3,110,10,3,22,2,3,2,1,171,31,0,,,0,,,3,1,1\n"))
+  EXPECT_TRUE(
+      contains(csv, "small_house,0,1,rrt,RRT,3,3,1,3,110,10,3,22,2,3,2,1,171,31,0,,,0,,,3,1,1\n"))
       << csv;
-  EXPECT_TRUE(contains(csv,
-                       "houseexpo,1,3,nearest_frontier,Nearest frontier "
-                       "(explore_lite),3,2,0.666667,2,60,14.1421,2,12,2.82843,3,1,1,,,0,,,0,,,0,,\n"))
+  EXPECT_TRUE(
+      contains(csv,
+               "houseexpo,1,3,nearest_frontier,Nearest frontier "
+               "(explore_lite),3,2,0.666667,2,60,14.1421,2,12,2.82843,3,1,1,,,0,,,0,,,0,,\n"))
       << csv;
 }
 
@@ -158,7 +160,8 @@ TEST(Report, NamesTheMethodsWhoseSeedsAllGaveTheSameRun) {
     const auto record = [&](const char* world, const char* method, int seed, double t98) {
       out << R"({"world": ")" << world << R"(", "world_group": "builtin", "method": ")" << method
           << R"(", "seed": )" << seed << R"(, "exploration_rate": 0.99, "t98_s": )" << t98
-          << R"(, "l98_m": 20.0})" << "\n";
+          << R"(, "l98_m": 20.0})"
+          << "\n";
     };
     for (const char* world : {"small_house", "medium_house"}) {
       record(world, "mmpf", 1, 100.0);

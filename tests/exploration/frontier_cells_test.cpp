@@ -61,15 +61,19 @@ TEST(FrontierCellsTest, CountAgreesWithTheFullScan) {
     for (int k = 0; k < 25; ++k) {
       const int x = xs(rng), y = ys(rng);
       const int kind = kinds(rng);
-      const CellState s = kind < 6 ? CellState::kFree : kind < 8 ? CellState::kOccupied : CellState::kUnknown;
+      const CellState s = kind < 6   ? CellState::kFree
+                          : kind < 8 ? CellState::kOccupied
+                                     : CellState::kUnknown;
       fill(grid, x, y, std::min(80, x + sizes(rng)), std::min(60, y + sizes(rng)), s);
     }
     Costmap costmap;
     costmap.update(grid);
     const Vec2 robot = grid.geometry().centerOf(Cell{xs(rng), ys(rng)});
     const std::size_t all = reachableFrontierCells(grid, costmap, 4, nullptr, &robot).size();
-    for (const std::size_t limit : {std::size_t{1}, std::size_t{2}, std::size_t{7}, std::size_t{100000}}) {
-      EXPECT_EQ(countReachableFrontierCells(grid, costmap, 4, nullptr, robot, limit), std::min(all, limit))
+    for (const std::size_t limit :
+         {std::size_t{1}, std::size_t{2}, std::size_t{7}, std::size_t{100000}}) {
+      EXPECT_EQ(countReachableFrontierCells(grid, costmap, 4, nullptr, robot, limit),
+                std::min(all, limit))
           << "trial " << trial << " limit " << limit;
     }
   }
@@ -86,7 +90,8 @@ TEST(FrontierCellsTest, RejectsACostmapOfAnotherGrid) {
   EXPECT_THROW(countReachableFrontierCells(grid, costmap, 4, nullptr, robot, 2), InvalidArgument);
   EXPECT_THROW(nearestGoalCell(grid, costmap, robot, 1.0), InvalidArgument);
   std::vector<std::uint8_t> exhausted;
-  EXPECT_THROW(markUnknownPockets(exhausted, grid, costmap, {Cell{5, 5}}, 1.0, 0.0), InvalidArgument);
+  EXPECT_THROW(markUnknownPockets(exhausted, grid, costmap, {Cell{5, 5}}, 1.0, 0.0),
+               InvalidArgument);
 }
 
 }  // namespace

@@ -81,7 +81,8 @@ class GrowingMap {
   OccupancyGrid grid(int pad, double resolution_m) const {
     if (resolution_m == kRes) return grid(pad);
     const GridGeometry f = frame(pad);
-    const GridGeometry g(f.origin_m(), resolution_m, static_cast<int>(std::ceil(f.width() * kRes / resolution_m)),
+    const GridGeometry g(f.origin_m(), resolution_m,
+                         static_cast<int>(std::ceil(f.width() * kRes / resolution_m)),
                          static_cast<int>(std::ceil(f.height() * kRes / resolution_m)));
     OccupancyGrid out(g);
     for (std::size_t i = 0; i < g.cellCount(); ++i) {
@@ -135,7 +136,8 @@ enum class Leg { kReached, kStopped, kDriving };
 
 /// Drives the robot along `path` up to kStep_m, stopping short of a truly occupied cell, each
 /// waypoint shifted by `off`, and reveals the map around where it ends.
-Leg driveLeg(GrowingMap& map, Pose2& robot, const std::vector<Vec2>& path, const Vec2& off = Vec2::Zero()) {
+Leg driveLeg(GrowingMap& map, Pose2& robot, const std::vector<Vec2>& path,
+             const Vec2& off = Vec2::Zero()) {
   Vec2 at = robot.position();
   double driven = 0.0;
   std::size_t i = 0;
@@ -148,7 +150,8 @@ Leg driveLeg(GrowingMap& map, Pose2& robot, const std::vector<Vec2>& path, const
   const bool moved = (at - robot.position()).norm() > 1e-9;
   if (moved) robot = Pose2{at.x(), at.y(), std::atan2(at.y() - robot.y_m, at.x() - robot.x_m)};
   map.reveal(robot.position(), kSight_m);
-  if (i + 1 >= path.size() && (path.empty() || map.truth(path.back()) == CellState::kFree)) return Leg::kReached;
+  if (i + 1 >= path.size() && (path.empty() || map.truth(path.back()) == CellState::kFree))
+    return Leg::kReached;
   return moved ? Leg::kDriving : Leg::kStopped;
 }
 
@@ -156,8 +159,9 @@ Leg driveLeg(GrowingMap& map, Pose2& robot, const std::vector<Vec2>& path, const
 /// decisions (1 s apart) were taken. The robot follows an A* path through the costmap toward each
 /// goal, up to kStep_m per decision, and stops short of a truly occupied cell (the path may cross
 /// unknown space).
-GrowingRun runOnGrowingMap(ExplorationStrategy& strategy, int max_steps,
-                           double (*resolutionAt)(int) = [](int) { return kRes; }) {
+GrowingRun runOnGrowingMap(
+    ExplorationStrategy& strategy, int max_steps,
+    double (*resolutionAt)(int) = [](int) { return kRes; }) {
   GrowingMap map;
   Pose2 robot{8.2, 6.0, -M_PI / 2};
   map.reveal(robot.position(), kSight_m);
@@ -175,7 +179,8 @@ GrowingRun runOnGrowingMap(ExplorationStrategy& strategy, int max_steps,
       run.grew_down += g.origin_m().y() < last.origin_m().y() - 1e-9;
       run.grew_right += farCorner(g).x() > farCorner(last).x() + 1e-9;
       run.grew_up += farCorner(g).y() > farCorner(last).y() + 1e-9;
-      run.shrank += g.origin_m().x() > last.origin_m().x() + 1e-9 && farCorner(g).x() < farCorner(last).x() - 1e-9;
+      run.shrank += g.origin_m().x() > last.origin_m().x() + 1e-9 &&
+                    farCorner(g).x() < farCorner(last).x() - 1e-9;
     }
     last = g;
     costmap.update(grid);
@@ -240,8 +245,8 @@ TEST_P(GrowingMapTest, ExploresTheWholePlanWithGoalsInsideEachGrid) {
 // per-cell state is laid on the new cells (or reset) and nothing is read out of bounds.
 TEST_P(GrowingMapTest, GoesOnWhenTheResolutionChanges) {
   auto strategy = createStrategy(GetParam(), 5);
-  const GrowingRun run =
-      runOnGrowingMap(*strategy, 40, [](int k) { return k % 10 < 5 ? kRes : (k % 20 < 10 ? 0.1 : 0.04); });
+  const GrowingRun run = runOnGrowingMap(
+      *strategy, 40, [](int k) { return k % 10 < 5 ? kRes : (k % 20 < 10 ? 0.1 : 0.04); });
   EXPECT_GT(run.geometry_changes, 5);
   EXPECT_GT(run.goals, 5);
   EXPECT_EQ(run.goals_off_grid, 0) << "of " << run.goals;
@@ -266,7 +271,8 @@ int firstDifference(const std::string& name, int max_steps, int& decisions) {
   Pose2 robot{8.2 + off.x(), 6.0 + off.y(), -M_PI / 2};
   map.reveal(robot.position(), kSight_m);
   const int around = 60;
-  const GridGeometry constant(Vec2(-around * kRes, -around * kRes), kRes, map.planGeometry().width() + 2 * around,
+  const GridGeometry constant(Vec2(-around * kRes, -around * kRes), kRes,
+                              map.planGeometry().width() + 2 * around,
                               map.planGeometry().height() + 2 * around);
   auto fixed = createStrategy(name, 11), growing = createStrategy(name, 11);
   Costmap fixed_costmap, growing_costmap;
@@ -283,9 +289,10 @@ int firstDifference(const std::string& name, int max_steps, int& decisions) {
       growing_rooms.update(b.geometry(), RoomSegmenter().segment(b).labels, maps::stateView(b));
     }
     const double t = static_cast<double>(k);
-    const Decision da = fixed->decide({a, fixed_costmap, robot, t, fixed->readsRooms() ? &fixed_rooms : nullptr});
-    const Decision db =
-        growing->decide({b, growing_costmap, robot, t, growing->readsRooms() ? &growing_rooms : nullptr});
+    const Decision da =
+        fixed->decide({a, fixed_costmap, robot, t, fixed->readsRooms() ? &fixed_rooms : nullptr});
+    const Decision db = growing->decide(
+        {b, growing_costmap, robot, t, growing->readsRooms() ? &growing_rooms : nullptr});
     ++decisions;
     if (da.status != db.status) return k;
     if (da.status == Decision::Status::kDone) return -1;
@@ -329,7 +336,8 @@ TEST_P(GrowingMapTest, DecidesAsOnAConstantGridHoldingTheSameMaps) {
 bool inside(const GridGeometry& g, const Vec2& p_m) { return g.contains(g.cellOf(p_m)); }
 
 std::size_t pointsOutside(const SemanticExplorer& s, const GridGeometry& g) {
-  return static_cast<std::size_t>(std::count_if(s.frontierPoints().begin(), s.frontierPoints().end(),
+  return static_cast<std::size_t>(std::count_if(s.frontierPoints().begin(),
+                                                s.frontierPoints().end(),
                                                 [&](const auto& f) { return !inside(g, f.p); }));
 }
 std::size_t nodesOutside(const RrtTree& tree, const GridGeometry& g) {
@@ -358,7 +366,8 @@ TEST(SemanticExplorerOnGrowingMap, DropsWhatACroppedGridLosesAndExploresWhatAGro
     if (d.status == Decision::Status::kGoal) {
       const GridGeometry& g = grid.geometry();
       EXPECT_TRUE(inside(g, d.goal_m)) << "t " << t;
-      EXPECT_FALSE(costmap.isLethal(g.cellOf(d.goal_m))) << "t " << t;  // off the grid counts as lethal
+      EXPECT_FALSE(costmap.isLethal(g.cellOf(d.goal_m)))
+          << "t " << t;  // off the grid counts as lethal
     }
     return d;
   };
@@ -389,7 +398,8 @@ TEST(SemanticExplorerOnGrowingMap, DropsWhatACroppedGridLosesAndExploresWhatAGro
 
   // C: the robot went south through the door into the corridor and east along it; the map
   // grew on every side (a wider margin too) and its origin moved south-west.
-  for (const Vec2& p : {Vec2(2.6, 3.5), Vec2(2.6, 1.2), Vec2(5.0, 1.2), Vec2(8.2, 1.2)}) map.reveal(p, 2.5);
+  for (const Vec2& p : {Vec2(2.6, 3.5), Vec2(2.6, 1.2), Vec2(5.0, 1.2), Vec2(8.2, 1.2)})
+    map.reveal(p, 2.5);
   const OccupancyGrid c = map.grid(20);
   const GridGeometry& gc = c.geometry();
   ASSERT_LT(gc.origin_m().x(), ga.origin_m().x());
@@ -407,7 +417,8 @@ TEST(SemanticExplorerOnGrowingMap, DropsWhatACroppedGridLosesAndExploresWhatAGro
   }
   EXPECT_GE(goals_in_new_part, 5);
   const auto east = [&](const Vec2& p) { return p.x() > grown_east_of_m; };
-  EXPECT_TRUE(std::any_of(s.frontierPoints().begin(), s.frontierPoints().end(), [&](const auto& f) { return east(f.p); }));
+  EXPECT_TRUE(std::any_of(s.frontierPoints().begin(), s.frontierPoints().end(),
+                          [&](const auto& f) { return east(f.p); }));
   std::size_t east_nodes = 0;
   for (std::size_t i = 0; i < s.tree()->size(); ++i) east_nodes += east(s.tree()->node(i));
   EXPECT_GT(east_nodes, 10u);
@@ -447,7 +458,8 @@ void treesFollowTheGrid(Strategy& s, const std::function<std::vector<const RrtTr
   EXPECT_EQ(nodesOff(b.geometry()), 0u);
   for (const RrtTree* tree : trees()) EXPECT_FALSE(tree->empty());
 
-  for (const Vec2& p : {Vec2(2.6, 3.5), Vec2(2.6, 1.2), Vec2(5.0, 1.2), Vec2(8.2, 1.2)}) map.reveal(p, 2.5);
+  for (const Vec2& p : {Vec2(2.6, 3.5), Vec2(2.6, 1.2), Vec2(5.0, 1.2), Vec2(8.2, 1.2)})
+    map.reveal(p, 2.5);
   const OccupancyGrid c = map.grid(20);
   const Pose2 corridor{8.2, 1.2, 0.0};
   for (int k = 0; k < 10; ++k) decideOn(c, corridor, 22.0 + 2.0 * k);
@@ -461,7 +473,9 @@ void treesFollowTheGrid(Strategy& s, const std::function<std::vector<const RrtTr
 
 TEST(RrtOnGrowingMap, TreesKeepToTheGridAndGrowIntoItsNewPart) {
   RrtExploration rrt(4);
-  treesFollowTheGrid(rrt, [&] { return std::vector<const RrtTree*>{rrt.globalTree(), rrt.localTree()}; });
+  treesFollowTheGrid(rrt, [&] {
+    return std::vector<const RrtTree*>{rrt.globalTree(), rrt.localTree()};
+  });
   ImprovedRrt improved(4);
   treesFollowTheGrid(improved, [&] { return std::vector<const RrtTree*>{improved.tree()}; });
 }

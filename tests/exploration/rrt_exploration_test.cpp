@@ -176,7 +176,8 @@ TEST(ImprovedRrtTest, AfterIdlingDrivesToLookAtTheCellsTheEndTestStillCounts) {
       EXPECT_LT((look.goal_m - start).norm(), 0.1) << "the original keeps waiting";
       continue;
     }
-    ASSERT_TRUE(nearCell(look.goal_m)) << "goal (" << look.goal_m.x() << ", " << look.goal_m.y() << ")";
+    ASSERT_TRUE(nearCell(look.goal_m))
+        << "goal (" << look.goal_m.x() << ", " << look.goal_m.y() << ")";
     EXPECT_EQ(strategy.decide(ExplorationInput{grid, costmap, robot, 30.25}).goal_m, look.goal_m);
     // There: the cells within observed_radius_m count as looked at; the next goal is at the
     // other corner.
@@ -184,7 +185,8 @@ TEST(ImprovedRrtTest, AfterIdlingDrivesToLookAtTheCellsTheEndTestStillCounts) {
     strategy.onGoalReached(look.goal_m);
     const Decision next = strategy.decide(ExplorationInput{grid, costmap, robot, 31.0});
     ASSERT_EQ(next.status, Decision::Status::kGoal);
-    EXPECT_TRUE(nearCell(next.goal_m)) << "goal (" << next.goal_m.x() << ", " << next.goal_m.y() << ")";
+    EXPECT_TRUE(nearCell(next.goal_m))
+        << "goal (" << next.goal_m.x() << ", " << next.goal_m.y() << ")";
     EXPECT_GT(look.goal_m.y(), 2.0);
     EXPECT_LT(next.goal_m.y(), 1.0);
     // Both corners looked at: nothing is left, the robot waits (the end test passes now).

@@ -6,9 +6,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <opencv2/core.hpp>
 #include <utility>
 #include <vector>
-#include <opencv2/core.hpp>
 
 #include "roomscout/exploration/strategy_registry.hpp"
 #include "roomscout/maps/semantic_map.hpp"
@@ -26,7 +26,8 @@ struct LabelledGrid {
   SemanticMap semantic;
   /// A 10 x 6 m grid unless `height_cells` says otherwise (0.05 m cells, 200 wide).
   template <class Paint>
-  explicit LabelledGrid(Paint paint, int height_cells = 120) : grid(GridGeometry({0.0, 0.0}, 0.05, 200, height_cells)) {
+  explicit LabelledGrid(Paint paint, int height_cells = 120)
+      : grid(GridGeometry({0.0, 0.0}, 0.05, 200, height_cells)) {
     const GridGeometry& g = grid.geometry();
     cv::Mat labels(g.height(), g.width(), CV_32S, cv::Scalar(0));
     for (int y = 0; y < g.height(); ++y) {
@@ -45,13 +46,15 @@ struct LabelledGrid {
 struct TwoRoomGrid : LabelledGrid {
   TwoRoomGrid()
       : LabelledGrid([](int x, int y) {
-          return y < 60 ? std::pair{CellState::kFree, x < 100 ? 1 : 2} : std::pair{CellState::kUnknown, 0};
+          return y < 60 ? std::pair{CellState::kFree, x < 100 ? 1 : 2}
+                        : std::pair{CellState::kUnknown, 0};
         }) {}
 };
 
 /// The decision after `grow_s` of tree growth with the robot standing still at `robot`.
 template <class World>
-Decision decideAfterGrowing(SemanticExplorer& s, const World& w, const Pose2& robot, double grow_s = 20.0) {
+Decision decideAfterGrowing(SemanticExplorer& s, const World& w, const Pose2& robot,
+                            double grow_s = 20.0) {
   s.decide({w.grid, w.costmap, robot, 0.0, &w.semantic});
   return s.decide({w.grid, w.costmap, robot, grow_s, &w.semantic});
 }
@@ -65,7 +68,8 @@ struct TermGoal {
   std::vector<Vec2> semantic_candidates;  ///< the cells P_sem was drawn from
 };
 template <class World, class Configure>
-TermGoal firstGoalWithTerm(const World& w, std::uint64_t seed, const Pose2& robot, Configure configure) {
+TermGoal firstGoalWithTerm(const World& w, std::uint64_t seed, const Pose2& robot,
+                           Configure configure) {
   SemanticExplorerOptions o;
   o.heading_weight = 0.0;
   o.iterations_per_s = 2000.0;
@@ -203,7 +207,8 @@ TEST(SemanticExplorerTest, DropsAGoalOnceTheWallBehindItIsSeen) {
     const int r = static_cast<int>(std::lround((o.gain_half_side_m + 1.5) / g.resolution_m()));
     for (int y = 0; y <= c.y + 6; ++y) {
       for (int x = std::max(0, c.x - r); x <= std::min(g.width() - 1, c.x + r); ++x) {
-        w.grid.setState(g.index(Cell{x, y}), y == c.y + 6 ? CellState::kOccupied : CellState::kFree);
+        w.grid.setState(g.index(Cell{x, y}),
+                        y == c.y + 6 ? CellState::kOccupied : CellState::kFree);
       }
     }
     w.costmap.update(w.grid);
@@ -348,9 +353,11 @@ TEST(SemanticExplorerTest, ChoosingTheNextRoomTheNearestComesFirst) {
       EXPECT_TRUE(s.semanticCandidates().empty());  // room 1 is finished
       ASSERT_EQ(d.status, Decision::Status::kGoal);
       if (factor == 1.0) {
-        EXPECT_GT(d.goal_m.x(), 5.9) << "seed " << seed << ": " << d.goal_m.transpose();  // the east end
+        EXPECT_GT(d.goal_m.x(), 5.9)
+            << "seed " << seed << ": " << d.goal_m.transpose();  // the east end
       } else {
-        EXPECT_LT(d.goal_m.x(), 4.0) << "seed " << seed << ": " << d.goal_m.transpose();  // the alcove
+        EXPECT_LT(d.goal_m.x(), 4.0)
+            << "seed " << seed << ": " << d.goal_m.transpose();  // the alcove
         EXPECT_GT(d.goal_m.y(), 2.9) << "seed " << seed << ": " << d.goal_m.transpose();
       }
     }
@@ -366,17 +373,21 @@ struct FrontierMassGrid : LabelledGrid {
   FrontierMassGrid()
       : LabelledGrid(
             [](int x, int y) {
-              auto in = [&](int x0, int x1, int y0, int y1) { return x >= x0 && x < x1 && y >= y0 && y < y1; };
+              auto in = [&](int x0, int x1, int y0, int y1) {
+                return x >= x0 && x < x1 && y >= y0 && y < y1;
+              };
               if (in(80, 120, 100, 140)) return std::pair{CellState::kFree, 1};
               if (in(90, 110, 40, 100)) return std::pair{CellState::kFree, 2};
               if (in(90, 110, 140, 220)) return std::pair{CellState::kFree, 3};
               if (in(50, 62, 170, 182) || in(140, 152, 170, 182) || in(50, 62, 200, 212)) {
                 return std::pair{CellState::kFree, 0};
               }
-              if (in(78, 122, 98, 142) || in(88, 112, 40, 220)) return std::pair{CellState::kOccupied, 0};
+              if (in(78, 122, 98, 142) || in(88, 112, 40, 220))
+                return std::pair{CellState::kOccupied, 0};
               // Known corners (walls) so that the known cells' box, which the uniform samples
               // come from, reaches past the corridors' ends.
-              if (in(0, 4, 0, 4) || in(196, 200, 236, 240)) return std::pair{CellState::kOccupied, 0};
+              if (in(0, 4, 0, 4) || in(196, 200, 236, 240))
+                return std::pair{CellState::kOccupied, 0};
               return std::pair{CellState::kUnknown, 0};
             },
             240) {}
@@ -389,19 +400,21 @@ TEST(SemanticExplorerTest, ChoosingTheNextRoomTheSideWithMoreFrontierAroundItCom
   for (const std::uint64_t seed : {1u, 2u, 3u}) {
     for (const double weight : {0.0, SemanticExplorerOptions{}.mass_weight}) {
       FrontierMassGrid w;
-      const TermGoal g = firstGoalWithTerm(w, seed, Pose2{5.0, 6.0, 0.0},
-                                           [&](SemanticExplorerOptions& o) {
-                                             o.mass_weight = weight;
-                                             o.leaf_rooms = false;  // both corridors are dead ends off room 1
-                                           });
+      const TermGoal g =
+          firstGoalWithTerm(w, seed, Pose2{5.0, 6.0, 0.0}, [&](SemanticExplorerOptions& o) {
+            o.mass_weight = weight;
+            o.leaf_rooms = false;  // both corridors are dead ends off room 1
+          });
       EXPECT_NE(g.room, 0);
       EXPECT_FALSE(g.hub);
       const Decision& d = g.decision;
       ASSERT_EQ(d.status, Decision::Status::kGoal);
       if (weight == 0.0) {
-        EXPECT_LT(d.goal_m.y(), 2.5) << "seed " << seed << ": " << d.goal_m.transpose();  // south end
+        EXPECT_LT(d.goal_m.y(), 2.5)
+            << "seed " << seed << ": " << d.goal_m.transpose();  // south end
       } else {
-        EXPECT_GT(d.goal_m.y(), 10.5) << "seed " << seed << ": " << d.goal_m.transpose();  // north end
+        EXPECT_GT(d.goal_m.y(), 10.5)
+            << "seed " << seed << ": " << d.goal_m.transpose();  // north end
       }
     }
   }
@@ -416,13 +429,16 @@ struct LeafRoomGrid : LabelledGrid {
   LeafRoomGrid()
       : LabelledGrid(
             [](int x, int y) {
-              auto in = [&](int x0, int x1, int y0, int y1) { return x >= x0 && x < x1 && y >= y0 && y < y1; };
+              auto in = [&](int x0, int x1, int y0, int y1) {
+                return x >= x0 && x < x1 && y >= y0 && y < y1;
+              };
               if (in(4, 76, 4, 76) || in(76, 80, 10, 26) || in(30, 46, 76, 80)) {
                 return std::pair{CellState::kFree, 1};
               }
               if (in(80, 100, 4, 56)) return std::pair{CellState::kFree, 2};
               if (in(20, 60, 80, 100)) return std::pair{CellState::kFree, x < 40 ? 3 : 4};
-              if (in(100, 140, 4, 56) || in(20, 60, 100, 150)) return std::pair{CellState::kUnknown, 0};
+              if (in(100, 140, 4, 56) || in(20, 60, 100, 150))
+                return std::pair{CellState::kUnknown, 0};
               return std::pair{CellState::kOccupied, 0};
             },
             160) {}
@@ -437,18 +453,20 @@ TEST(SemanticExplorerTest, ALeafRoomOffTheCurrentRoomIsFinishedWithIt) {
       LeafRoomGrid w;
       ASSERT_EQ(w.semantic.region(2)->neighbours, std::vector<int>{1});
       ASSERT_EQ(w.semantic.region(3)->neighbours.size(), 2u);
-      const TermGoal g =
-          firstGoalWithTerm(w, seed, Pose2{2.0, 3.3, 0.0}, [&](SemanticExplorerOptions& o) { o.leaf_rooms = leaf; });
+      const TermGoal g = firstGoalWithTerm(
+          w, seed, Pose2{2.0, 3.3, 0.0}, [&](SemanticExplorerOptions& o) { o.leaf_rooms = leaf; });
       EXPECT_EQ(g.room, 1);
       EXPECT_FALSE(g.hub);
       EXPECT_EQ(g.semantic_candidates.empty(), !leaf);
-      for (const Vec2& p : g.semantic_candidates) EXPECT_EQ(w.semantic.roomAt(p), 2) << p.transpose();
+      for (const Vec2& p : g.semantic_candidates)
+        EXPECT_EQ(w.semantic.roomAt(p), 2) << p.transpose();
       const Decision& d = g.decision;
       ASSERT_EQ(d.status, Decision::Status::kGoal);
       if (leaf) {
         EXPECT_GT(d.goal_m.x(), 4.5) << "seed " << seed << ": " << d.goal_m.transpose();  // room 2
       } else {
-        EXPECT_GT(d.goal_m.y(), 4.5) << "seed " << seed << ": " << d.goal_m.transpose();  // rooms 3-4
+        EXPECT_GT(d.goal_m.y(), 4.5)
+            << "seed " << seed << ": " << d.goal_m.transpose();  // rooms 3-4
       }
     }
   }
@@ -476,15 +494,18 @@ TEST(SemanticExplorerTest, TheLongerFrontierSegmentWinsByTheSegmentTerm) {
   for (const std::uint64_t seed : {1u, 2u, 3u}) {
     for (const double weight : {0.0, SemanticExplorerOptions{}.segment_weight}) {
       TwoGapGrid w;
-      const Decision d = firstGoalWithTerm(w, seed, Pose2{3.0, 3.0, 0.0}, [&](SemanticExplorerOptions& o) {
-                           o.segment_weight = weight;
-                         }).decision;
+      const Decision d =
+          firstGoalWithTerm(w, seed, Pose2{3.0, 3.0, 0.0}, [&](SemanticExplorerOptions& o) {
+            o.segment_weight = weight;
+          }).decision;
       ASSERT_EQ(d.status, Decision::Status::kGoal);
       EXPECT_GT(d.goal_m.y(), 5.9) << "seed " << seed;
       if (weight == 0.0) {
-        EXPECT_LT(d.goal_m.x(), 3.6) << "seed " << seed << ": " << d.goal_m.transpose();  // the narrow gap
+        EXPECT_LT(d.goal_m.x(), 3.6)
+            << "seed " << seed << ": " << d.goal_m.transpose();  // the narrow gap
       } else {
-        EXPECT_GT(d.goal_m.x(), 6.6) << "seed " << seed << ": " << d.goal_m.transpose();  // the wide gap
+        EXPECT_GT(d.goal_m.x(), 6.6)
+            << "seed " << seed << ": " << d.goal_m.transpose();  // the wide gap
       }
     }
   }
@@ -499,14 +520,17 @@ struct PocketGrid : LabelledGrid {
       : LabelledGrid(
             [](int x, int y) {
               const bool block = x >= kX0 && x <= kX1 && y >= kY0 && y <= kY1;
-              if (block && (x == kX1 || y == kY0 || y == kY1)) return std::pair{CellState::kOccupied, 0};
+              if (block && (x == kX1 || y == kY0 || y == kY1))
+                return std::pair{CellState::kOccupied, 0};
               if (block) return std::pair{CellState::kUnknown, 0};
               return std::pair{CellState::kFree, x < 100 ? 1 : 2};
             },
             100) {}
   bool nearBlock(const Vec2& p) const {
-    const Vec2 lo = grid.geometry().centerOf(Cell{kX0, kY0}), hi = grid.geometry().centerOf(Cell{kX1, kY1});
-    return p.x() > lo.x() - 1.0 && p.x() < hi.x() + 1.0 && p.y() > lo.y() - 1.0 && p.y() < hi.y() + 1.0;
+    const Vec2 lo = grid.geometry().centerOf(Cell{kX0, kY0}),
+               hi = grid.geometry().centerOf(Cell{kX1, kY1});
+    return p.x() > lo.x() - 1.0 && p.x() < hi.x() + 1.0 && p.y() > lo.y() - 1.0 &&
+           p.y() < hi.y() + 1.0;
   }
 };
 
@@ -551,7 +575,8 @@ TEST(SemanticExplorerTest, OnceIdleLooksIntoAPocketThatIsLargeForTheMap) {
     for (double t = 0.0; t <= 100.0 && out.done_s < 0.0; t += 1.0) {
       const Decision d = s.decide({w.grid, w.costmap, Pose2{2.0, 2.5, 0.0}, t, &w.semantic});
       if (d.status == Decision::Status::kDone) out.done_s = t;
-      if (d.status == Decision::Status::kGoal && w.nearBlock(d.goal_m) && out.first_block_goal_s < 0.0) {
+      if (d.status == Decision::Status::kGoal && w.nearBlock(d.goal_m) &&
+          out.first_block_goal_s < 0.0) {
         out.first_block_goal_s = t;
       }
     }
@@ -766,11 +791,13 @@ sim::World alcoveAndHall() {
   w.name = "alcove_and_hall";
   w.source = "test:alcove_and_hall";
   const double t = 0.2;
-  w.walls = {{{0, 0}, {20, 0}, t, 0, 2.5},   {{20, 0}, {20, 8}, t, 0, 2.5}, {{20, 8}, {0, 8}, t, 0, 2.5},
-             {{0, 8}, {0, 0}, t, 0, 2.5},    {{10, 0}, {10, 0.6}, t, 0, 2.5}, {{10, 1.6}, {10, 8}, t, 0, 2.5},
+  w.walls = {{{0, 0}, {20, 0}, t, 0, 2.5},      {{20, 0}, {20, 8}, t, 0, 2.5},
+             {{20, 8}, {0, 8}, t, 0, 2.5},      {{0, 8}, {0, 0}, t, 0, 2.5},
+             {{10, 0}, {10, 0.6}, t, 0, 2.5},   {{10, 1.6}, {10, 8}, t, 0, 2.5},
              {{3.5, 3.0}, {3.5, 8}, t, 0, 2.5}, {{0, 3.0}, {2.3, 3.0}, t, 0, 2.5}};
   w.doors = {{{10, 1.1}, 1.0}};
-  w.rooms = {{1, "west", {{0, 0}, {10, 0}, {10, 8}, {0, 8}}}, {2, "east", {{10, 0}, {20, 0}, {20, 8}, {10, 8}}}};
+  w.rooms = {{1, "west", {{0, 0}, {10, 0}, {10, 8}, {0, 8}}},
+             {2, "east", {{10, 0}, {20, 0}, {20, 8}, {10, 8}}}};
   w.start = {8.5, 1.2, 0.0};
   w.start_given = true;
   return w;
@@ -818,8 +845,8 @@ TEST(SemanticExplorerTest, FinishesTheFirstRoomBeforeEnteringTheSecondWhereRrtDo
   for (const std::uint64_t seed : {1u, 2u, 3u, 4u, 5u, 6u}) {
     const double semantic = westKnownOnLeaving("semantic", seed);
     const double rrt = westKnownOnLeaving("rrt", seed);
-    EXPECT_GE(semantic, 0.85) << "seed " << seed << ": semantic left the west room with " << semantic * 100
-                              << " % of it known";
+    EXPECT_GE(semantic, 0.85) << "seed " << seed << ": semantic left the west room with "
+                              << semantic * 100 << " % of it known";
     rrt_left_early += rrt < 0.5 ? 1 : 0;
   }
   EXPECT_GE(rrt_left_early, 4) << "rrt left the west room with less than half of it known in "

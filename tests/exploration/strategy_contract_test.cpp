@@ -26,7 +26,8 @@ class CheckedStrategy final : public ExplorationStrategy {
       const GridGeometry& g = input.costmap.geometry();
       const Cell c = g.cellOf(d.goal_m);
       ++goals;
-      if (!g.contains(c) || input.costmap.isLethal(g.index(c)) || input.grid.isOccupied(g.index(c))) ++bad_goals;
+      if (!g.contains(c) || input.costmap.isLethal(g.index(c)) || input.grid.isOccupied(g.index(c)))
+        ++bad_goals;
     }
     return d;
   }
@@ -43,8 +44,8 @@ class CheckedStrategy final : public ExplorationStrategy {
   std::unique_ptr<ExplorationStrategy> inner_;
 };
 
-sim::EpisodeResult run(const sim::World& world, const std::string& method, std::uint64_t seed, CheckedStrategy** out = nullptr,
-                       double max_time_s = 0.0) {
+sim::EpisodeResult run(const sim::World& world, const std::string& method, std::uint64_t seed,
+                       CheckedStrategy** out = nullptr, double max_time_s = 0.0) {
   sim::EpisodeConfig config;
   config.resolve();
   config.episode.max_time_s = max_time_s;
@@ -98,7 +99,8 @@ TEST_P(StrategyContract, FullyKnownMapEndsAtOnce) {
 
 TEST_P(StrategyContract, ClosedRoomEndsCleanlyWithSafeGoals) {
   CheckedStrategy* checked = nullptr;
-  const sim::EpisodeResult r = run(sim::testing::squareRoom(4.0, 0.2), GetParam(), 1, &checked, 600.0);
+  const sim::EpisodeResult r =
+      run(sim::testing::squareRoom(4.0, 0.2), GetParam(), 1, &checked, 600.0);
   EXPECT_FALSE(r.timed_out);
   ASSERT_TRUE(r.t_done_s.has_value());
   EXPECT_LT(*r.t_done_s, 200.0);
@@ -133,9 +135,11 @@ OccupancyGrid corridorGrid() {
   // 4 x 2 m: x < 2 m known free, x >= 2 m unknown; an occupied wall at y in [1.0, 1.05).
   OccupancyGrid grid(GridGeometry({0, 0}, 0.05, 80, 40));
   for (int y = 0; y < 40; ++y) {
-    for (int x = 0; x < 40; ++x) grid.setState(static_cast<std::size_t>(y) * 80 + x, CellState::kFree);
+    for (int x = 0; x < 40; ++x)
+      grid.setState(static_cast<std::size_t>(y) * 80 + x, CellState::kFree);
   }
-  for (int x = 0; x < 30; ++x) grid.setState(static_cast<std::size_t>(20) * 80 + x, CellState::kOccupied);
+  for (int x = 0; x < 30; ++x)
+    grid.setState(static_cast<std::size_t>(20) * 80 + x, CellState::kOccupied);
   return grid;
 }
 
@@ -146,7 +150,8 @@ TEST(RrtTree, EdgeCheckFindsFreeFrontierAndObstacle) {
   EXPECT_EQ(f.status, EdgeStatus::kFrontier);
   EXPECT_NEAR(f.end_m.x(), 2.0, 0.02);  // truncated at the first unknown cell
   EXPECT_EQ(checkEdge(grid, {0.5, 0.5}, {0.5, 1.5}).status, EdgeStatus::kObstacle);
-  EXPECT_EQ(checkEdge(grid, {0.5, 0.5}, {-1.0, 0.5}).status, EdgeStatus::kObstacle);  // leaves the grid
+  EXPECT_EQ(checkEdge(grid, {0.5, 0.5}, {-1.0, 0.5}).status,
+            EdgeStatus::kObstacle);  // leaves the grid
 }
 
 TEST(RrtTree, NearestMatchesBruteForce) {
@@ -229,8 +234,8 @@ TEST(RrtTreeRebound, KeepsOrderAndParentsAndFindsNearestNodesInTheNewBox) {
     EXPECT_EQ(tree.node(new_index[i]), nodes[i]);
     std::size_t a = i;
     while (a != parents[a] && new_index[parents[a]] == SIZE_MAX) a = parents[a];
-    const std::size_t expected = a == parents[a] || new_index[parents[a]] == SIZE_MAX ? new_index[i]
-                                                                                       : new_index[parents[a]];
+    const std::size_t expected =
+        a == parents[a] || new_index[parents[a]] == SIZE_MAX ? new_index[i] : new_index[parents[a]];
     EXPECT_EQ(tree.parent(new_index[i]), expected) << "node " << i;
   }
   for (int q = 0; q < 300; ++q) {

@@ -59,7 +59,8 @@ void expectSameTopology(const TopologicalMap& a, const TopologicalMap& b) {
     EXPECT_EQ(a.nodes()[i].position_m, b.nodes()[i].position_m);
     EXPECT_EQ(a.nodes()[i].region_id, b.nodes()[i].region_id);
   }
-  for (std::size_t i = 0; i < a.edges().size(); ++i) EXPECT_EQ(a.edges()[i].polyline_m, b.edges()[i].polyline_m);
+  for (std::size_t i = 0; i < a.edges().size(); ++i)
+    EXPECT_EQ(a.edges()[i].polyline_m, b.edges()[i].polyline_m);
 }
 
 TEST(AnalysisMap, TopologyFollowsTheRoomsOrEveryNthOfTheirUpdates) {

@@ -22,7 +22,8 @@ namespace {
 bool isWall(const Vec2& p) {
   if (p.x() < 0.0 || p.x() > 12.0 || p.y() < 0.0 || p.y() > 4.0) return true;
   const bool border = p.x() < 0.1 || p.x() > 11.9 || p.y() < 0.1 || p.y() > 3.9;
-  const bool partition = (std::abs(p.x() - 4.0) < 0.05 || std::abs(p.x() - 8.0) < 0.05) && std::abs(p.y() - 2.0) > 0.5;
+  const bool partition =
+      (std::abs(p.x() - 4.0) < 0.05 || std::abs(p.x() - 8.0) < 0.05) && std::abs(p.y() - 2.0) > 0.5;
   return border || partition;
 }
 
@@ -53,11 +54,13 @@ struct ToyRobot {
 
   OccupancyGrid sense() {
     known.unite(mapper.integrate(measure(pose), pose));
-    const CellRect crop = CellRect{known.min_x - 20, known.min_y - 20, known.max_x + 20, known.max_y + 20}.clippedTo(
-        slam.geometry().width(), slam.geometry().height());
+    const CellRect crop =
+        CellRect{known.min_x - 20, known.min_y - 20, known.max_x + 20, known.max_y + 20}.clippedTo(
+            slam.geometry().width(), slam.geometry().height());
     const GridGeometry& g = slam.geometry();
     const Vec2 origin = g.origin_m() + Vec2(crop.min_x, crop.min_y) * g.resolution_m();
-    return slam.reframed(GridGeometry(origin, g.resolution_m(), crop.max_x - crop.min_x, crop.max_y - crop.min_y));
+    return slam.reframed(
+        GridGeometry(origin, g.resolution_m(), crop.max_x - crop.min_x, crop.max_y - crop.min_y));
   }
   /// Hops 0.1 m toward the first waypoint at least that far beyond the one nearest the robot.
   void drive(const Path& path) {
@@ -84,7 +87,8 @@ double knownFreeFraction(const OccupancyGrid& map) {
       const Vec2 p(x, y);
       bool near_wall = false;
       for (double dx = -0.2; dx <= 0.2 && !near_wall; dx += 0.1)
-        for (double dy = -0.2; dy <= 0.2 && !near_wall; dy += 0.1) near_wall = isWall(p + Vec2(dx, dy));
+        for (double dy = -0.2; dy <= 0.2 && !near_wall; dy += 0.1)
+          near_wall = isWall(p + Vec2(dx, dy));
       if (near_wall) continue;
       ++free;
       const Cell c = map.geometry().cellOf(p);
@@ -193,7 +197,8 @@ TEST(Explorer, ABlockedRobotBacksOffThenGetsANewGoal) {
   const ExplorerCommand after = explorer.update({map, robot.pose, 11.0});
   ASSERT_EQ(after.kind, ExplorerCommand::Kind::kDrive);
   EXPECT_TRUE(after.new_path);
-  EXPECT_GT((after.goal_m - first.goal_m).norm(), 2.0) << "the failed goal's door should be given up";
+  EXPECT_GT((after.goal_m - first.goal_m).norm(), 2.0)
+      << "the failed goal's door should be given up";
   explorer.report(GoalOutcome::kReached, 11.0);
   EXPECT_FALSE(explorer.goal().has_value());
 }
@@ -207,7 +212,8 @@ TEST(Explorer, AGoalWithoutProgressFails) {
   // The robot never moves: after the timeout its goal fails and it is given another.
   int drives = 0;
   for (double t = 0.0; t < 7.0; t += 0.25) {
-    drives += explorer.update({map, robot.pose, t, CellRect{}}).kind == ExplorerCommand::Kind::kDrive;
+    drives +=
+        explorer.update({map, robot.pose, t, CellRect{}}).kind == ExplorerCommand::Kind::kDrive;
   }
   EXPECT_GE(drives, 20);
   EXPECT_GE(explorer.stats().goal_failures, 1);
@@ -253,7 +259,8 @@ TEST(Explorer, OptionsComeFromTheConfigGroupsAndAreChecked) {
   ExplorerOptions options;
   std::vector<std::string> names;
   for (const ParameterGroup& g : options.groups()) names.push_back(g.name);
-  for (const char* group : {"costmap", "planner", "episode", "follower", "laser", "maps", "segmentation", "topology"}) {
+  for (const char* group :
+       {"costmap", "planner", "episode", "follower", "laser", "maps", "segmentation", "topology"}) {
     EXPECT_NE(std::find(names.begin(), names.end(), group), names.end()) << group;
   }
   options.goals.no_progress_timeout_s = 0.0;

@@ -24,7 +24,8 @@ OccupancyGrid twoRooms() {
   const GridGeometry& g = grid.geometry();
   for (int y = 0; y < g.height(); ++y) {
     for (int x = 0; x < g.width(); ++x) {
-      const bool wall = x < 2 || y < 2 || x >= 118 || y >= 78 || (x >= 60 && x < 62 && (y < 30 || y >= 48));
+      const bool wall =
+          x < 2 || y < 2 || x >= 118 || y >= 78 || (x >= 60 && x < 62 && (y < 30 || y >= 48));
       grid.setState(g.index(Cell{x, y}), wall ? CellState::kOccupied : CellState::kFree);
     }
   }
@@ -81,16 +82,18 @@ TEST(AnalysisMapsIo, WritesTopologyFiles) {
   EXPECT_EQ(j["nodes"].size(), topo.nodes().size());
   EXPECT_EQ(j["edges"].size(), topo.edges().size());
   ASSERT_FALSE(j["edges"].empty());
-  for (const char* key : {"id", "u", "v", "length", "min_clearance", "polyline"}) EXPECT_TRUE(j["edges"][0].contains(key));
-  for (const char* key : {"id", "x", "y", "kind", "region_id", "clearance"}) EXPECT_TRUE(j["nodes"][0].contains(key));
+  for (const char* key : {"id", "u", "v", "length", "min_clearance", "polyline"})
+    EXPECT_TRUE(j["edges"][0].contains(key));
+  for (const char* key : {"id", "x", "y", "kind", "region_id", "clearance"})
+    EXPECT_TRUE(j["nodes"][0].contains(key));
   EXPECT_FALSE(cv::imread((dir / "topology.png").string()).empty());
 }
 
 TEST(SegmentationDataset, ListsMapsWithGroundTruth) {
   test::TempDir dir;
   const cv::Mat img(20, 20, CV_8U, cv::Scalar(255));
-  for (const char* f : {"a.png", "a_gt_segmentation.png", "a_furnitures.png", "b.png", "b_gt_segmentation.png",
-                        "c.png"}) {
+  for (const char* f : {"a.png", "a_gt_segmentation.png", "a_furnitures.png", "b.png",
+                        "b_gt_segmentation.png", "c.png"}) {
     cv::imwrite((dir / f).string(), img);
   }
   const auto maps = listSegmentationDataset(dir.path());

@@ -172,10 +172,12 @@ TEST(ApplyConfigFile, LoadsTheExplorersOptionsFromTheSameGroups) {
   const TempDir dir;
   ExplorerOptions options;
   std::vector<ParameterGroup> groups = options.groups();
-  const auto file = dir.write("robot.yaml",
-                              "costmap:\n  inflation_margin_m: 0.08\nplanner:\n  allow_unknown: false\n"
-                              "episode:\n  no_progress_timeout_s: 30\nfollower:\n  goal_tolerance_m: 0.3\n"
-                              "laser:\n  range_max_m: 8\nmaps:\n  period_s: 2\nsegmentation:\n  door_cut_max_width_m: 1.2\n");
+  const auto file =
+      dir.write("robot.yaml",
+                "costmap:\n  inflation_margin_m: 0.08\nplanner:\n  allow_unknown: false\n"
+                "episode:\n  no_progress_timeout_s: 30\nfollower:\n  goal_tolerance_m: 0.3\n"
+                "laser:\n  range_max_m: 8\nmaps:\n  period_s: 2\nsegmentation:\n  "
+                "door_cut_max_width_m: 1.2\n");
   applyConfigFile(file, groups);
   EXPECT_DOUBLE_EQ(options.costmap.inflation_margin_m, 0.08);
   EXPECT_FALSE(options.planner.allow_unknown);

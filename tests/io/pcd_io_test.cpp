@@ -41,7 +41,8 @@ TEST(PcdIo, RoundTripInEveryFormat) {
     const auto [lo2, hi2] = boundsOf(back);
     EXPECT_TRUE(lo2.isApprox(lo, 1e-5f)) << pcdFormatName(format);
     EXPECT_TRUE(hi2.isApprox(hi, 1e-5f)) << pcdFormatName(format);
-    for (std::size_t i = 0; i < points.size(); i += 97) EXPECT_TRUE(back[i].isApprox(points[i], 1e-6f));
+    for (std::size_t i = 0; i < points.size(); i += 97)
+      EXPECT_TRUE(back[i].isApprox(points[i], 1e-6f));
     const std::string bytes = readFile(path);
     EXPECT_NE(bytes.find("# keyframes: every 1 m or 0.2 rad second line\n"), std::string::npos);
     EXPECT_NE(bytes.find("DATA " + std::string(pcdFormatName(format))), std::string::npos);
@@ -65,8 +66,10 @@ TEST(PcdIo, PrecisionRoundsAndSortsWithinHalfAStep) {
   EXPECT_LE((lo2 - lo).cwiseAbs().maxCoeff(), 0.0025f + 1e-5f);
   EXPECT_LE((hi2 - hi).cwiseAbs().maxCoeff(), 0.0025f + 1e-5f);
   for (std::size_t i = 1; i < back.size(); ++i) ASSERT_LE(back[i - 1].x(), back[i].x());
-  EXPECT_LT(std::filesystem::file_size(dir / "rounded.pcd"), std::filesystem::file_size(dir / "exact.pcd"));
-  EXPECT_THROW(writePcdAtomic(dir / "bad.pcd", points, PcdFormat::kBinary, {}, -1.0), InvalidArgument);
+  EXPECT_LT(std::filesystem::file_size(dir / "rounded.pcd"),
+            std::filesystem::file_size(dir / "exact.pcd"));
+  EXPECT_THROW(writePcdAtomic(dir / "bad.pcd", points, PcdFormat::kBinary, {}, -1.0),
+               InvalidArgument);
 }
 
 TEST(PcdIo, EmptyCloudAndErrors) {
@@ -76,7 +79,8 @@ TEST(PcdIo, EmptyCloudAndErrors) {
   EXPECT_THROW(readPcd(dir / "missing.pcd"), InputError);
   dir.write("garbage.pcd", "not a point cloud\n");
   EXPECT_THROW(readPcd(dir / "garbage.pcd"), InputError);
-  EXPECT_THROW(writePcdAtomic(dir / "no_such_dir" / "x.pcd", randomCloud(3), PcdFormat::kBinary), InputError);
+  EXPECT_THROW(writePcdAtomic(dir / "no_such_dir" / "x.pcd", randomCloud(3), PcdFormat::kBinary),
+               InputError);
   EXPECT_EQ(parsePcdFormat("ascii"), PcdFormat::kAscii);
   EXPECT_EQ(parsePcdFormat("binary_compressed"), PcdFormat::kBinaryCompressed);
   EXPECT_THROW(parsePcdFormat("ply"), OptionError);
@@ -88,13 +92,15 @@ sim::World smallWorld() {
   w.name = "pcd_frame";
   w.source = "test:pcd_frame";
   const double t = 0.15;
-  w.walls = {{{0, 0}, {8, 0}, t, 0, 2.5}, {{8, 0}, {8, 5}, t, 0, 2.5}, {{8, 5}, {0, 5}, t, 0, 2.5},
-             {{0, 5}, {0, 0}, t, 0, 2.5}, {{4, 0}, {4, 2.0}, t, 0, 2.5}, {{4, 3.0}, {4, 5}, t, 0, 2.5},
+  w.walls = {{{0, 0}, {8, 0}, t, 0, 2.5},      {{8, 0}, {8, 5}, t, 0, 2.5},
+             {{8, 5}, {0, 5}, t, 0, 2.5},      {{0, 5}, {0, 0}, t, 0, 2.5},
+             {{4, 0}, {4, 2.0}, t, 0, 2.5},    {{4, 3.0}, {4, 5}, t, 0, 2.5},
              {{4, 2.0}, {4, 3.0}, t, 2.0, 2.5}};
   w.doors = {{{4, 2.5}, 1.0}};
   w.furniture = {{"cupboard", {{6.5, 4.0}, {7.8, 4.0}, {7.8, 4.8}, {6.5, 4.8}}, 0.0, 2.0},
                  {"table_top", {{1.0, 1.0}, {2.0, 1.0}, {2.0, 2.0}, {1.0, 2.0}}, 0.71, 0.75}};
-  w.rooms = {{1, "west", {{0, 0}, {4, 0}, {4, 5}, {0, 5}}}, {2, "east", {{4, 0}, {8, 0}, {8, 5}, {4, 5}}}};
+  w.rooms = {{1, "west", {{0, 0}, {4, 0}, {4, 5}, {0, 5}}},
+             {2, "east", {{4, 0}, {8, 0}, {8, 5}, {4, 5}}}};
   w.start = {2.0, 3.5, 0.0};
   w.start_given = true;
   return w;
@@ -111,7 +117,8 @@ TEST(PcdIo, PointCloudAndOccupancyYamlShareTheirFrame) {
   ASSERT_GT(cloud.map().size(), 1000u);
   ASSERT_GT(cloud.keyframes(), 3);
   saveOccupancyMap(result.map, dir / "occupancy.yaml");
-  writePcdAtomic(dir / "pointcloud.pcd", cloud.map().points(), PcdFormat::kBinaryCompressed, "test", 0.005);
+  writePcdAtomic(dir / "pointcloud.pcd", cloud.map().points(), PcdFormat::kBinaryCompressed, "test",
+                 0.005);
 
   const OccupancyGrid grid = loadOccupancyMap(dir / "occupancy.yaml");
   const std::vector<Eigen::Vector3f> points = readPcd(dir / "pointcloud.pcd");

@@ -23,7 +23,8 @@ TEST(PointCloudMap, OnePointPerVoxelAtTheCentroid) {
   EXPECT_NEAR(c.y(), (0.01 + 0.02 + 0.01) / 3, 1e-6);
   EXPECT_NEAR(c.z(), (0.01 + 0.04 + 0.01) / 3, 1e-6);
   // Across a voxel boundary, including negative coordinates: separate voxels.
-  EXPECT_EQ(map.insert({{0.06f, 0.01f, 0.01f}, {-0.01f, 0.01f, 0.01f}, {0.01f, -0.01f, -0.01f}}), 3u);
+  EXPECT_EQ(map.insert({{0.06f, 0.01f, 0.01f}, {-0.01f, 0.01f, 0.01f}, {0.01f, -0.01f, -0.01f}}),
+            3u);
   EXPECT_EQ(map.size(), 4u);
 }
 

@@ -42,8 +42,9 @@ TEST(RoomSegmenter, OnlyFreeCellsAreLabelled) {
 TEST(RoomSegmenter, FurnitureDoesNotSplitARoom) {
   cv::Mat m = canvas(8, 6);
   box(m, 0.2, 0.2, 7.8, 5.8, F);
-  for (int i = 0; i < 3; ++i) box(m, 1.5 + 2 * i, 2.5, 2.3 + 2 * i, 3.3, CellState::kOccupied);  // tables
-  box(m, 0.2, 0.2, 1.0, 5.8, CellState::kOccupied);  // a shelf along a wall
+  for (int i = 0; i < 3; ++i)
+    box(m, 1.5 + 2 * i, 2.5, 2.3 + 2 * i, 3.3, CellState::kOccupied);  // tables
+  box(m, 0.2, 0.2, 1.0, 5.8, CellState::kOccupied);                    // a shelf along a wall
   const RoomSegmentation seg = RoomSegmenter().segment(m, test::kRes);
   EXPECT_EQ(seg.room_count, 1);
 }

@@ -74,8 +74,10 @@ TEST(SegmentationScore, GroundTruthFromBenchmarkImage) {
 }
 
 TEST(SegmentationScore, RejectsMismatchedImages) {
-  EXPECT_THROW(scoreSegmentation(cv::Mat::zeros(3, 3, CV_32S), cv::Mat::zeros(4, 3, CV_32S)), InvalidArgument);
-  EXPECT_THROW(scoreSegmentation(cv::Mat::zeros(3, 3, CV_8U), cv::Mat::zeros(3, 3, CV_32S)), InvalidArgument);
+  EXPECT_THROW(scoreSegmentation(cv::Mat::zeros(3, 3, CV_32S), cv::Mat::zeros(4, 3, CV_32S)),
+               InvalidArgument);
+  EXPECT_THROW(scoreSegmentation(cv::Mat::zeros(3, 3, CV_8U), cv::Mat::zeros(3, 3, CV_32S)),
+               InvalidArgument);
 }
 
 }  // namespace

@@ -18,7 +18,9 @@ namespace {
 using test::box;
 const auto U = CellState::kUnknown;
 
-GridGeometry geometryOf(const cv::Mat& m) { return GridGeometry(Vec2::Zero(), test::kRes, m.cols, m.rows); }
+GridGeometry geometryOf(const cv::Mat& m) {
+  return GridGeometry(Vec2::Zero(), test::kRes, m.cols, m.rows);
+}
 
 void updateWith(SemanticMap& map, const cv::Mat& states) {
   map.update(geometryOf(states), RoomSegmenter().segment(states, test::kRes).labels, states);
@@ -101,7 +103,8 @@ TEST(SemanticMap, IdsAndColoursStableWhenTheGridGrowsAndItsOriginMoves) {
   // The first map covers the known part with a small margin; each next one grows on every side,
   // its origin moving left and down (beyond the plan: a SLAM map is not bounded by the building).
   const int pitch = static_cast<int>(std::lround(5.35 / test::kRes));
-  const Frame frames[] = {{-4, -4, 228, 216}, {-4 - pitch, -10, 228 + pitch + 20, 230}, {-30, -40, 400, 300}};
+  const Frame frames[] = {
+      {-4, -4, 228, 216}, {-4 - pitch, -10, 228 + pitch + 20, 230}, {-30, -40, 400, 300}};
   SemanticMap map;
   std::vector<int> ids;
   std::vector<std::array<std::uint8_t, 3>> colours;
@@ -128,7 +131,8 @@ TEST(SemanticMap, IdsAndColoursStableWhenTheGridGrowsAndItsOriginMoves) {
       EXPECT_EQ(region->rgb, colours[i]) << "probe " << i << " changed colour in frame " << k;
       // The rooms seen whole from the start stay where they were in the map frame.
       if (i < 2) {
-        EXPECT_LT((region->centroid_m - centroids[i]).norm(), 0.05) << "probe " << i << " frame " << k;
+        EXPECT_LT((region->centroid_m - centroids[i]).norm(), 0.05)
+            << "probe " << i << " frame " << k;
       }
     }
   }
@@ -140,7 +144,8 @@ TEST(SemanticMap, IdsAndColoursStableWhenTheGridGrowsAndItsOriginMoves) {
   // Matching by cell index would have been wrong here: in the second frame the middle room
   // lies on the cells the west room had in the first.
   const GridGeometry g0(Vec2(-4 * test::kRes, -4 * test::kRes), test::kRes, 228, 216);
-  const GridGeometry g1(Vec2((-4 - pitch) * test::kRes, -10 * test::kRes), test::kRes, 228 + pitch + 20, 230);
+  const GridGeometry g1(Vec2((-4 - pitch) * test::kRes, -10 * test::kRes), test::kRes,
+                        228 + pitch + 20, 230);
   const Cell west_in_g0 = g0.cellOf(probes[0]);
   EXPECT_GT(std::abs(g1.centerOf(west_in_g0).x() - probes[0].x()), 5.0);
 }
@@ -160,8 +165,9 @@ TEST(SemanticMap, ACopyKeepsItsRoomsWhenTheOriginalIsUpdated) {
 
 TEST(SemanticMap, RejectsLabelsOfAnotherSize) {
   SemanticMap map;
-  EXPECT_THROW(map.update(GridGeometry(Vec2::Zero(), 0.05, 4, 4), cv::Mat::zeros(3, 4, CV_32S), cv::Mat()),
-               InvalidArgument);
+  EXPECT_THROW(
+      map.update(GridGeometry(Vec2::Zero(), 0.05, 4, 4), cv::Mat::zeros(3, 4, CV_32S), cv::Mat()),
+      InvalidArgument);
 }
 
 }  // namespace

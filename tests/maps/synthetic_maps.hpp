@@ -15,13 +15,16 @@ inline std::uint8_t v(CellState s) { return static_cast<std::uint8_t>(s); }
 
 /// A canvas of `fill` cells, w x h metres.
 inline cv::Mat canvas(double w_m, double h_m, CellState fill = CellState::kOccupied) {
-  return cv::Mat(static_cast<int>(h_m / kRes), static_cast<int>(w_m / kRes), CV_8U, cv::Scalar(v(fill)));
+  return cv::Mat(static_cast<int>(h_m / kRes), static_cast<int>(w_m / kRes), CV_8U,
+                 cv::Scalar(v(fill)));
 }
 
 /// Sets the cells of the rectangle [x0, x1) x [y0, y1) (metres) to `s`.
 inline void box(cv::Mat& m, double x0, double y0, double x1, double y1, CellState s) {
-  const cv::Rect r(static_cast<int>(std::lround(x0 / kRes)), static_cast<int>(std::lround(y0 / kRes)),
-                   static_cast<int>(std::lround((x1 - x0) / kRes)), static_cast<int>(std::lround((y1 - y0) / kRes)));
+  const cv::Rect r(static_cast<int>(std::lround(x0 / kRes)),
+                   static_cast<int>(std::lround(y0 / kRes)),
+                   static_cast<int>(std::lround((x1 - x0) / kRes)),
+                   static_cast<int>(std::lround((y1 - y0) / kRes)));
   m(r & cv::Rect(0, 0, m.cols, m.rows)).setTo(v(s));
 }
 
@@ -30,7 +33,8 @@ inline OccupancyGrid gridOf(const cv::Mat& states) {
   OccupancyGrid grid(GridGeometry(Vec2::Zero(), kRes, states.cols, states.rows));
   for (int y = 0; y < states.rows; ++y) {
     for (int x = 0; x < states.cols; ++x) {
-      grid.setState(grid.geometry().index(Cell{x, y}), static_cast<CellState>(states.at<std::uint8_t>(y, x)));
+      grid.setState(grid.geometry().index(Cell{x, y}),
+                    static_cast<CellState>(states.at<std::uint8_t>(y, x)));
     }
   }
   return grid;
@@ -45,7 +49,7 @@ inline cv::Mat threeRoomsAndCorridor(cv::Mat* truth = nullptr) {
   box(m, 0.2, 0.2, 16.2, 2.2, F);  // corridor
   for (int i = 0; i < 3; ++i) {
     const double x0 = 0.2 + i * 5.35;
-    box(m, x0, 2.3, x0 + 5.25, 10.2, F);  // room above the corridor wall (y 2.2 .. 2.3)
+    box(m, x0, 2.3, x0 + 5.25, 10.2, F);      // room above the corridor wall (y 2.2 .. 2.3)
     box(m, x0 + 2.0, 2.2, x0 + 2.9, 2.3, F);  // door
   }
   if (truth) {

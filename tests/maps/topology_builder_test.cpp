@@ -22,7 +22,8 @@ using test::canvas;
 const auto F = CellState::kFree;
 
 TopologicalMap buildOf(const cv::Mat& states) {
-  return TopologyBuilder().build(states, GridGeometry(Vec2::Zero(), test::kRes, states.cols, states.rows), nullptr);
+  return TopologyBuilder().build(
+      states, GridGeometry(Vec2::Zero(), test::kRes, states.cols, states.rows), nullptr);
 }
 
 int countKind(const TopologicalMap& t, TopoNodeKind kind) {
@@ -132,7 +133,8 @@ TEST(Thinning, SameSkeletonAsOpenCv) {
 
 TEST(TopologyBuilder, RejectsMismatchedGeometry) {
   const cv::Mat m = canvas(2, 2);
-  EXPECT_THROW(TopologyBuilder().build(m, GridGeometry(Vec2::Zero(), 0.05, 3, 3), nullptr), InvalidArgument);
+  EXPECT_THROW(TopologyBuilder().build(m, GridGeometry(Vec2::Zero(), 0.05, 3, 3), nullptr),
+               InvalidArgument);
   TopologyBuilderOptions bad;
   bad.opening_radius_m = -1;
   EXPECT_THROW(TopologyBuilder{bad}, OptionError);

@@ -179,7 +179,8 @@ TEST(CostmapTest, IncrementalUpdatesEqualABuildFromScratch) {
     const int x0 = xs(rng), y0 = ys(rng), w = sizes(rng), h = sizes(rng);
     const CellState s = static_cast<CellState>(kinds(rng));
     for (int y = y0; y < std::min(90, y0 + h); ++y) {
-      for (int x = x0; x < std::min(120, x0 + w); ++x) grid.setState(grid.geometry().index(Cell{x, y}), s);
+      for (int x = x0; x < std::min(120, x0 + w); ++x)
+        grid.setState(grid.geometry().index(Cell{x, y}), s);
     }
     incremental.update(grid);
     hinted.update(grid, CellRect{x0, y0, x0 + w, y0 + h});
@@ -188,8 +189,10 @@ TEST(CostmapTest, IncrementalUpdatesEqualABuildFromScratch) {
     for (std::size_t i = 0; i < grid.geometry().cellCount(); ++i) {
       ASSERT_EQ(incremental.isLethal(i), fresh.isLethal(i)) << "step " << step << " cell " << i;
       ASSERT_EQ(incremental.isUnknown(i), fresh.isUnknown(i)) << "step " << step << " cell " << i;
-      ASSERT_FLOAT_EQ(incremental.clearance_m(i), fresh.clearance_m(i)) << "step " << step << " cell " << i;
-      ASSERT_FLOAT_EQ(incremental.stepCost(i), fresh.stepCost(i)) << "step " << step << " cell " << i;
+      ASSERT_FLOAT_EQ(incremental.clearance_m(i), fresh.clearance_m(i))
+          << "step " << step << " cell " << i;
+      ASSERT_FLOAT_EQ(incremental.stepCost(i), fresh.stepCost(i))
+          << "step " << step << " cell " << i;
       ASSERT_EQ(hinted.isLethal(i), fresh.isLethal(i)) << "step " << step << " cell " << i;
       ASSERT_FLOAT_EQ(hinted.stepCost(i), fresh.stepCost(i)) << "step " << step << " cell " << i;
     }

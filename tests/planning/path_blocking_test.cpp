@@ -21,10 +21,12 @@ TEST(PathBlocking, AnObstacleNearAWaypointAheadWithinTheHorizonBlocks) {
   const std::vector<Cell> disc = discOffsets(2.5);
   const Vec2 robot(0.05, 0.55);
   EXPECT_FALSE(pathBlockedAhead(grid, path, 0, robot, 100.0, disc));
-  grid.setState(grid.geometry().index(Cell{60, 7}), CellState::kOccupied);  // 2 cells off waypoint 60
+  grid.setState(grid.geometry().index(Cell{60, 7}),
+                CellState::kOccupied);  // 2 cells off waypoint 60
   EXPECT_TRUE(pathBlockedAhead(grid, path, 0, robot, 100.0, disc));
   EXPECT_FALSE(pathBlockedAhead(grid, path, 0, robot, 5.0, disc)) << "beyond the horizon";
-  EXPECT_FALSE(pathBlockedAhead(grid, path, 0, robot, 100.0, discOffsets(1.5))) << "outside the disc";
+  EXPECT_FALSE(pathBlockedAhead(grid, path, 0, robot, 100.0, discOffsets(1.5)))
+      << "outside the disc";
   EXPECT_FALSE(pathBlockedAhead(grid, path, 63, robot, 100.0, disc)) << "already passed";
 }
 

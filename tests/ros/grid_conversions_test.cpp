@@ -53,7 +53,8 @@ TEST(GridConversions, ReportsTheCellsThatChanged) {
   ASSERT_TRUE(same.changed.has_value());
   EXPECT_TRUE(same.changed->empty());
   // Grown map: another geometry, so any cell may differ.
-  EXPECT_FALSE(fromMsg(message(5, 3, std::vector<std::int8_t>(15, -1)), &b.grid).changed.has_value());
+  EXPECT_FALSE(
+      fromMsg(message(5, 3, std::vector<std::int8_t>(15, -1)), &b.grid).changed.has_value());
 }
 
 TEST(GridConversions, RejectsMapsItCannotUse) {

@@ -9,10 +9,10 @@
 #include <string>
 
 #include <gtest/gtest.h>
-#include <nlohmann/json.hpp>
 #include <std_msgs/String.h>
 #include <std_srvs/Trigger.h>
 #include <visualization_msgs/MarkerArray.h>
+#include <nlohmann/json.hpp>
 
 #include "roomscout/experiment/episode_setup.hpp"
 #include "roomscout/io/pcd_io.hpp"
@@ -36,7 +36,8 @@ class StatusListener {
   }
   const std::optional<nlohmann::json>& last() const { return last_; }
   bool is(const char* key, bool value) const {
-    return last_ && last_->contains(key) && (*last_)[key].is_boolean() && (*last_)[key].get<bool>() == value;
+    return last_ && last_->contains(key) && (*last_)[key].is_boolean() &&
+           (*last_)[key].get<bool>() == value;
   }
 
  private:
@@ -45,10 +46,13 @@ class StatusListener {
 };
 
 std::string simNode() { return std::string(ROOMSCOUT_ROS_PACKAGE_DIR) + "/bin/roomscout_sim_node"; }
-std::string exploreNode() { return std::string(ROOMSCOUT_ROS_PACKAGE_DIR) + "/bin/roomscout_explore_node"; }
+std::string exploreNode() {
+  return std::string(ROOMSCOUT_ROS_PACKAGE_DIR) + "/bin/roomscout_explore_node";
+}
 
 /// The in-process episode of `method` on small_house with the options of `config`.
-sim::EpisodeResult inProcess(const std::string& method, std::uint64_t seed, const std::filesystem::path& config) {
+sim::EpisodeResult inProcess(const std::string& method, std::uint64_t seed,
+                             const std::filesystem::path& config) {
   experiment::RunSettings settings;
   settings.config_file = config;
   experiment::EpisodeSetup setup = experiment::makeEpisodeSetup(method, seed, settings);
@@ -86,15 +90,18 @@ TEST(RosSystem, SemanticExploresSmallHouseOverRosAsInProcess) {
   const std::filesystem::path maps = master.dir() / "maps";
   const auto wall_start = std::chrono::steady_clock::now();
   auto sim = master.node(simNode(), "sim",
-                        {"_world:=small_house", "_seed:=1", "_sync_topic:=/explore/cycle", "_points:=true",
-                         "_config:=" + options.string()});
-  auto explore = master.node(exploreNode(), "explore", {"_method:=semantic", "_seed:=1", "_save_dir:=" + maps.string(),
-                                                        "_config:=" + options.string()});
+                         {"_world:=small_house", "_seed:=1", "_sync_topic:=/explore/cycle",
+                          "_points:=true", "_config:=" + options.string()});
+  auto explore = master.node(exploreNode(), "explore",
+                             {"_method:=semantic", "_seed:=1", "_save_dir:=" + maps.string(),
+                              "_config:=" + options.string()});
   const bool done = spinUntil([&] { return explore_status.is("done", true); }, seconds(400),
                               [&] { return !sim->poll() && !explore->poll(); });
-  const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+  const double wall_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
   ASSERT_TRUE(done) << "exploration did not end\n--- sim node ---\n"
-                    << sim->output() << "\n--- explore node ---\n" << explore->output();
+                    << sim->output() << "\n--- explore node ---\n"
+                    << explore->output();
   // The simulator's truth: the rate it last sampled, and when it first reached 98 %.
   spinUntil([&] { return false; }, seconds(2));
   ASSERT_TRUE(sim_status.last().has_value());
@@ -111,8 +118,9 @@ TEST(RosSystem, SemanticExploresSmallHouseOverRosAsInProcess) {
               *reference.t98_s, *reference.l98_m, t98, l98, wall_s);
   EXPECT_NEAR(t98, *reference.t98_s, 0.3 * *reference.t98_s);
   EXPECT_NEAR(l98, *reference.l98_m, 0.3 * *reference.l98_m);
-  for (const char* file : {"occupancy.pgm", "occupancy.yaml", "pointcloud.pcd", "topology.json", "topology.png",
-                           "semantic.json", "semantic.png", "semantic_labels.png"}) {
+  for (const char* file :
+       {"occupancy.pgm", "occupancy.yaml", "pointcloud.pcd", "topology.json", "topology.png",
+        "semantic.json", "semantic.png", "semantic_labels.png"}) {
     EXPECT_TRUE(std::filesystem::exists(maps / file)) << file;
   }
   EXPECT_GE(room_labels, 2) << "room markers with labels were published";
@@ -141,14 +149,20 @@ TEST(RosSystem, GoalsAbortedNearOneSpotAreGivenUp) {
   StatusListener sim_status("/sim/status"), explore_status("/explore/status");
   // move_base refuses every goal within 1.6 m of a spot in small_house's living room (wide
   // enough that some goal of the run falls in it whatever the timing of the two nodes).
-  auto sim = master.node(simNode(), "sim", {"_world:=small_house", "_seed:=2", "_sync_topic:=/explore/cycle", "_abort_goals_near:=[4.0, 4.0, 1.6]"});
-  auto explore = master.node(exploreNode(), "explore", {"_method:=nearest_frontier", "_save_dir:="});
+  auto sim = master.node(simNode(), "sim",
+                         {"_world:=small_house", "_seed:=2", "_sync_topic:=/explore/cycle",
+                          "_abort_goals_near:=[4.0, 4.0, 1.6]"});
+  auto explore =
+      master.node(exploreNode(), "explore", {"_method:=nearest_frontier", "_save_dir:="});
   const bool done = spinUntil([&] { return explore_status.is("done", true); }, seconds(400),
                               [&] { return !sim->poll() && !explore->poll(); });
-  ASSERT_TRUE(done) << "--- sim node ---\n" << sim->output() << "\n--- explore node ---\n" << explore->output();
+  ASSERT_TRUE(done) << "--- sim node ---\n"
+                    << sim->output() << "\n--- explore node ---\n"
+                    << explore->output();
   spinUntil([&] { return false; }, seconds(2));
   ASSERT_TRUE(sim_status.last().has_value());
-  EXPECT_GE((*sim_status.last())["goals_aborted"].get<int>(), 1) << "no goal came near the spot: move it";
+  EXPECT_GE((*sim_status.last())["goals_aborted"].get<int>(), 1)
+      << "no goal came near the spot: move it";
   EXPECT_GE((*explore_status.last())["goal_failures"].get<int>(), 1);
   EXPECT_GE((*sim_status.last())["rate"].get<double>(), 0.9);
 }
@@ -160,19 +174,24 @@ TEST(RosSystem, StoppingTheExplorerCancelsItsGoal) {
   ros::param::set("/use_sim_time", true);
   StatusListener sim_status("/sim/status");
   auto sim = master.node(simNode(), "sim", {"_world:=small_house", "_real_time_factor:=1"});
-  auto explore = master.node(exploreNode(), "explore", {"_method:=nearest_frontier", "_save_dir:="});
-  auto field = [&](const char* key) { return sim_status.last() ? (*sim_status.last())[key].get<int>() : 0; };
+  auto explore =
+      master.node(exploreNode(), "explore", {"_method:=nearest_frontier", "_save_dir:="});
+  auto field = [&](const char* key) {
+    return sim_status.last() ? (*sim_status.last())[key].get<int>() : 0;
+  };
   ASSERT_TRUE(spinUntil([&] { return field("goals_received") >= 1; }, seconds(60)))
       << sim->output() << explore->output();
   // At real time the first goal takes seconds to reach: it is still active when the node stops.
   const int canceled = field("goals_canceled");
   EXPECT_EQ(explore->stop(), 0) << explore->output();
-  EXPECT_TRUE(spinUntil([&] { return field("goals_canceled") > canceled; }, seconds(10))) << sim->output();
+  EXPECT_TRUE(spinUntil([&] { return field("goals_canceled") > canceled; }, seconds(10)))
+      << sim->output();
 }
 
 /// Runs a node that must refuse to start; returns its output after checking it exited with 1.
 /// Each gets a name of its own: `_name:=value` arguments stay on the parameter server.
-std::string refusedStart(const RosMaster& master, const std::string& binary, std::vector<std::string> args) {
+std::string refusedStart(const RosMaster& master, const std::string& binary,
+                         std::vector<std::string> args) {
   static int count = 0;
   auto node = master.node(binary, "refused" + std::to_string(++count), std::move(args));
   const std::optional<int> status = node->wait(seconds(30));
@@ -183,18 +202,22 @@ std::string refusedStart(const RosMaster& master, const std::string& binary, std
 
 TEST(RosSystem, NodesRefuseBadParametersWithAClearMessage) {
   RosMaster master;
-  EXPECT_NE(refusedStart(master, exploreNode(), {"_config:=/no/such/roomscout.yaml"}).find("/no/such/roomscout.yaml"),
+  EXPECT_NE(refusedStart(master, exploreNode(), {"_config:=/no/such/roomscout.yaml"})
+                .find("/no/such/roomscout.yaml"),
             std::string::npos);
-  EXPECT_NE(refusedStart(master, exploreNode(), {"_method:=no_such_method"}).find("no_such_method"), std::string::npos);
+  EXPECT_NE(refusedStart(master, exploreNode(), {"_method:=no_such_method"}).find("no_such_method"),
+            std::string::npos);
   const std::filesystem::path bad = master.dir() / "bad.yaml";
   std::FILE* f = std::fopen(bad.c_str(), "w");
   std::fputs("costmap:\n  inflation_margin_m: -3\n", f);
   std::fclose(f);
   const std::string out = refusedStart(master, exploreNode(), {"_config:=" + bad.string()});
   EXPECT_NE(out.find(bad.string() + ": costmap.inflation_margin_m"), std::string::npos) << out;
-  EXPECT_NE(refusedStart(master, simNode(), {"_world:=no_such_world"}).find("no_such_world"), std::string::npos);
+  EXPECT_NE(refusedStart(master, simNode(), {"_world:=no_such_world"}).find("no_such_world"),
+            std::string::npos);
   // A parameter of the wrong type is refused, not replaced by its default.
-  EXPECT_NE(refusedStart(master, exploreNode(), {"_seed:=abc"}).find("~seed must be an integer"), std::string::npos);
+  EXPECT_NE(refusedStart(master, exploreNode(), {"_seed:=abc"}).find("~seed must be an integer"),
+            std::string::npos);
 }
 
 /// Output of a command run to its end (stdout and stderr).
@@ -209,14 +232,18 @@ std::string commandOutput(const std::string& command) {
 }
 
 TEST(RosSystem, LaunchFileStartsBothNodesFromThePackageFolder) {
-  const std::string env = "ROS_PACKAGE_PATH=" + std::filesystem::path(ROOMSCOUT_ROS_PACKAGE_DIR).parent_path().string() +
+  const std::string env = "ROS_PACKAGE_PATH=" +
+                          std::filesystem::path(ROOMSCOUT_ROS_PACKAGE_DIR).parent_path().string() +
                           " ROS_HOME=" + std::filesystem::temp_directory_path().string() + " ";
-  const std::string nodes = commandOutput(env + "/usr/bin/roslaunch --nodes roomscout sim_explore.launch");
+  const std::string nodes =
+      commandOutput(env + "/usr/bin/roslaunch --nodes roomscout sim_explore.launch");
   EXPECT_NE(nodes.find("/sim"), std::string::npos) << nodes;
   EXPECT_NE(nodes.find("/explore"), std::string::npos) << nodes;
-  const std::string args = commandOutput(env + "/usr/bin/roslaunch --args /explore roomscout sim_explore.launch");
+  const std::string args =
+      commandOutput(env + "/usr/bin/roslaunch --args /explore roomscout sim_explore.launch");
   EXPECT_NE(args.find(exploreNode()), std::string::npos) << args;
-  const std::string robot = commandOutput(env + "/usr/bin/roslaunch --nodes roomscout explore.launch");
+  const std::string robot =
+      commandOutput(env + "/usr/bin/roslaunch --nodes roomscout explore.launch");
   EXPECT_NE(robot.find("/explore"), std::string::npos) << robot;
   EXPECT_EQ(robot.find("/sim"), std::string::npos) << robot;
 }

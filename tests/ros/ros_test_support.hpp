@@ -67,13 +67,15 @@ class ChildProcess {
   std::optional<int> poll() {
     if (status_) return status_;
     int st = 0;
-    if (::waitpid(pid_, &st, WNOHANG) == pid_) status_ = WIFEXITED(st) ? WEXITSTATUS(st) : -WTERMSIG(st);
+    if (::waitpid(pid_, &st, WNOHANG) == pid_)
+      status_ = WIFEXITED(st) ? WEXITSTATUS(st) : -WTERMSIG(st);
     return status_;
   }
   /// Waits up to `timeout` for it to exit.
   std::optional<int> wait(std::chrono::duration<double> timeout) {
     const auto end = std::chrono::steady_clock::now() + timeout;
-    while (!poll() && std::chrono::steady_clock::now() < end) std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    while (!poll() && std::chrono::steady_clock::now() < end)
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
     return poll();
   }
   /// Asks it to stop (SIGINT), kills it after `grace`; returns its exit status.
@@ -137,8 +139,8 @@ class RosMaster {
             {"ROS_HOME", (dir_.path() / "ros_home").string()},
             {"ROS_LOG_DIR", (dir_.path() / "ros_home" / "log").string()},
             {"PYTHONUNBUFFERED", "1"}};
-    master_.emplace(std::vector<std::string>{"/usr/bin/python3", "/usr/bin/rosmaster", "--core", "-p",
-                                             std::to_string(port_)},
+    master_.emplace(std::vector<std::string>{"/usr/bin/python3", "/usr/bin/rosmaster", "--core",
+                                             "-p", std::to_string(port_)},
                     env_, dir_.path() / "rosmaster.log");
     const auto end = std::chrono::steady_clock::now() + std::chrono::seconds(30);
     while (!portOpen(port_)) {
@@ -157,11 +159,14 @@ class RosMaster {
   void initClient(const std::string& name) const {
     if (ros::isInitialized()) {
       // roscpp joins one master per process, for good: a second would hang on the first's.
-      throw std::logic_error("one ROS system test per process: run them through ctest or --gtest_filter");
+      throw std::logic_error(
+          "one ROS system test per process: run them through ctest or --gtest_filter");
     }
     for (const auto& [k, v] : env_) ::setenv(k.c_str(), v.c_str(), 1);
-    std::map<std::string, std::string> remappings = {{"__master", uri()}, {"__hostname", "localhost"}};
-    ros::init(remappings, name, ros::init_options::NoSigintHandler | ros::init_options::AnonymousName);
+    std::map<std::string, std::string> remappings = {{"__master", uri()},
+                                                     {"__hostname", "localhost"}};
+    ros::init(remappings, name,
+              ros::init_options::NoSigintHandler | ros::init_options::AnonymousName);
   }
 
   /// Starts a node of the ROS package folder with `args` (e.g. "_world:=small_house").
@@ -181,8 +186,9 @@ class RosMaster {
 
 /// Spins this process's callbacks until `done()` holds or `timeout` (wall) passes, checking
 /// `alive()` (e.g. that the nodes still run) on the way.
-inline bool spinUntil(const std::function<bool()>& done, std::chrono::duration<double> timeout,
-                      const std::function<bool()>& alive = [] { return true; }) {
+inline bool spinUntil(
+    const std::function<bool()>& done, std::chrono::duration<double> timeout,
+    const std::function<bool()>& alive = [] { return true; }) {
   const auto end = std::chrono::steady_clock::now() + timeout;
   while (std::chrono::steady_clock::now() < end) {
     ros::spinOnce();

@@ -50,7 +50,8 @@ INSTANTIATE_TEST_SUITE_P(Worlds, BuiltinWorldExploration,
 // comparison between methods are the bench's job (README "Benchmarks"), with one exception
 // below (rrt in the medium house reaches 98 % but does not end). The ablations run on
 // the small house only: semantic_score_only stalls at 94 % in the medium house (issue 5).
-class EveryMethodExploresTheHouses : public ::testing::TestWithParam<std::tuple<std::string, std::string>> {};
+class EveryMethodExploresTheHouses
+    : public ::testing::TestWithParam<std::tuple<std::string, std::string>> {};
 
 TEST_P(EveryMethodExploresTheHouses, ReachesAtLeast98PercentAndEnds) {
   const auto& [world_name, method] = GetParam();
@@ -78,12 +79,17 @@ std::vector<std::string> methodsWithoutAblations() {
 }
 
 INSTANTIATE_TEST_SUITE_P(SmallHouse, EveryMethodExploresTheHouses,
-                         ::testing::Combine(::testing::Values("small_house"), ::testing::ValuesIn(strategyNames())),
-                         [](const auto& info) { return std::get<0>(info.param) + "_" + std::get<1>(info.param); });
+                         ::testing::Combine(::testing::Values("small_house"),
+                                            ::testing::ValuesIn(strategyNames())),
+                         [](const auto& info) {
+                           return std::get<0>(info.param) + "_" + std::get<1>(info.param);
+                         });
 INSTANTIATE_TEST_SUITE_P(MediumHouse, EveryMethodExploresTheHouses,
                          ::testing::Combine(::testing::Values("medium_house"),
                                             ::testing::ValuesIn(methodsWithoutAblations())),
-                         [](const auto& info) { return std::get<0>(info.param) + "_" + std::get<1>(info.param); });
+                         [](const auto& info) {
+                           return std::get<0>(info.param) + "_" + std::get<1>(info.param);
+                         });
 
 TEST(Episode, SameSeedSameMetrics) {
   const World world = io::loadBuiltinWorld("small_house");
@@ -141,14 +147,16 @@ TEST(Episode, BumpingIntoAnObstacleTheLaserCannotSeeRecoversAndEnds) {
   w.name = "low_box";
   w.source = "test:low_box";
   const double t = 0.2;
-  w.walls = {{{0, 0}, {10, 0}, t, 0, 2.5}, {{10, 0}, {10, 1.4}, t, 0, 2.5},
-             {{10, 1.4}, {0, 1.4}, t, 0, 2.5}, {{0, 1.4}, {0, 0}, t, 0, 2.5}};
+  w.walls = {{{0, 0}, {10, 0}, t, 0, 2.5},
+             {{10, 0}, {10, 1.4}, t, 0, 2.5},
+             {{10, 1.4}, {0, 1.4}, t, 0, 2.5},
+             {{0, 1.4}, {0, 0}, t, 0, 2.5}};
   w.furniture.push_back({"low_box", {{2.5, 0.1}, {2.9, 0.1}, {2.9, 1.3}, {2.5, 1.3}}, 0.0, 0.1});
   w.start = {0.8, 0.7, 0.0};
   w.start_given = true;
   const EpisodeResult r = explore(w, "nearest_frontier", 1);
-  EXPECT_GE(r.recoveries, 1) << "t_done " << r.t_done_s.value_or(-1) << " goals " << r.goals << " failures "
-                             << r.goal_failures << " length " << r.length_m;
+  EXPECT_GE(r.recoveries, 1) << "t_done " << r.t_done_s.value_or(-1) << " goals " << r.goals
+                             << " failures " << r.goal_failures << " length " << r.length_m;
   EXPECT_FALSE(r.timed_out);
   EXPECT_TRUE(r.t_done_s.has_value());
   // It never drove through the box.
@@ -182,10 +190,14 @@ TEST_P(ExplorerLoop, ReproducesTheSimulatorsOwnLoopExactly) {
 
 INSTANTIATE_TEST_SUITE_P(
     SmallHouse, ExplorerLoop,
-    ::testing::Values(RecordedRun{"nearest_frontier", 569.0000000000302, 120.67972575541211, 984.4499999996524, 123, 1, 0, 33},
-                      RecordedRun{"semantic", 421.00000000006145, 90.2040124860518, 830.7999999997921, 1275, 1, 1, 20},
-                      RecordedRun{"mmpf", 430.0000000000635, 91.46325810923796, 743.4499999998716, 84, 1, 0, 22},
-                      RecordedRun{"improved_rrt", 714.9999999998975, 146.28047059670536, 1282.0499999993817, 1622, 4, 1, 39}),
+    ::testing::Values(RecordedRun{"nearest_frontier", 569.0000000000302, 120.67972575541211,
+                                  984.4499999996524, 123, 1, 0, 33},
+                      RecordedRun{"semantic", 421.00000000006145, 90.2040124860518,
+                                  830.7999999997921, 1275, 1, 1, 20},
+                      RecordedRun{"mmpf", 430.0000000000635, 91.46325810923796, 743.4499999998716,
+                                  84, 1, 0, 22},
+                      RecordedRun{"improved_rrt", 714.9999999998975, 146.28047059670536,
+                                  1282.0499999993817, 1622, 4, 1, 39}),
     [](const auto& info) { return std::string(info.param.method); });
 
 // With the map published as SLAM packages publish it (the known area plus a margin, its origin
@@ -206,10 +218,12 @@ TEST_P(GrowingMap, ExploresTheSmallHouseAsOnTheFixedGrid) {
   ASSERT_TRUE(r.l98_m && fixed.l98_m);
   EXPECT_LT(*r.l98_m, 1.3 * *fixed.l98_m) << "fixed grid " << *fixed.l98_m << " m";
   // The map it ends with is the published one: no larger than the world's grid.
-  EXPECT_LE(r.map.geometry().cellCount(), mapGeometryFor(model, config.mapping.resolution_m).cellCount());
+  EXPECT_LE(r.map.geometry().cellCount(),
+            mapGeometryFor(model, config.mapping.resolution_m).cellCount());
 }
 
-INSTANTIATE_TEST_SUITE_P(TreeMethods, GrowingMap, ::testing::Values("semantic", "rrt", "improved_rrt"));
+INSTANTIATE_TEST_SUITE_P(TreeMethods, GrowingMap,
+                         ::testing::Values("semantic", "rrt", "improved_rrt"));
 
 TEST(Episode, RejectsAnUnknownMapMode) {
   EpisodeConfig config;

@@ -65,7 +65,8 @@ TEST(LaserSimulator, NoiseIsDeterministicForASeed) {
   const WorldModel model(testing::squareRoom(4.0, 0.2));
   const LaserOptions options;
   const RangeNoise noise{.sd_near_m = 0.02};
-  LaserSimulator a(model, options, 7, noise), b(model, options, 7, noise), c(model, options, 8, noise);
+  LaserSimulator a(model, options, 7, noise), b(model, options, 7, noise),
+      c(model, options, 8, noise);
   const Pose2 pose{2.0, 2.0, 0.3};
   const LaserScan sa = a.scan(pose), sb = b.scan(pose), sc = c.scan(pose);
   EXPECT_EQ(sa.ranges_m, sb.ranges_m);

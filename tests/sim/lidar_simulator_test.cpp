@@ -23,8 +23,11 @@ World furnishedRoom() {
   w.furniture.push_back(top);
   for (const Vec2& c : {Vec2(6.05, 4.55), Vec2(6.95, 4.55), Vec2(6.95, 5.45), Vec2(6.05, 5.45)}) {
     const Vec2 h(0.025, 0.025);
-    w.furniture.push_back({"leg", {c - h, Vec2(c.x() + h.x(), c.y() - h.y()), c + h, Vec2(c.x() - h.x(), c.y() + h.y())},
-                           0.0, 0.71});
+    w.furniture.push_back(
+        {"leg",
+         {c - h, Vec2(c.x() + h.x(), c.y() - h.y()), c + h, Vec2(c.x() - h.x(), c.y() + h.y())},
+         0.0,
+         0.71});
   }
   return w;
 }
@@ -38,8 +41,8 @@ struct ReferenceHit {
   LidarSurface surface = LidarSurface::kObject;
 };
 
-ReferenceHit referenceCast(const ColumnWorld& world, const Eigen::Vector2d& origin_m, double z_m, double cos_az,
-                           double sin_az, double elevation_rad, double max_range_m) {
+ReferenceHit referenceCast(const ColumnWorld& world, const Eigen::Vector2d& origin_m, double z_m,
+                           double cos_az, double sin_az, double elevation_rad, double max_range_m) {
   const double inf = std::numeric_limits<double>::infinity();
   const double slope = std::tan(elevation_rad), cos_elev = std::cos(elevation_rad);
   double t_plane = inf;
@@ -89,7 +92,8 @@ ReferenceHit referenceCast(const ColumnWorld& world, const Eigen::Vector2d& orig
     }
     if (limit_m <= t_out_m) {
       if (!plane_hit) return {};
-      return {limit_m, (plane_surface == LidarSurface::kFloor ? world.floor_m() : world.ceiling_m()) - z_m,
+      return {limit_m,
+              (plane_surface == LidarSurface::kFloor ? world.floor_m() : world.ceiling_m()) - z_m,
               plane_surface};
     }
     if (t_max_x < t_max_y) {
@@ -114,8 +118,10 @@ void expectSameAsReference(const World& w, int poses, std::uint32_t seed) {
   const LidarOptions& o = lidar.options();
   const GridGeometry& g = columns.geometry();
   std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> ux(g.origin_m().x(), g.origin_m().x() + g.width() * g.resolution_m());
-  std::uniform_real_distribution<double> uy(g.origin_m().y(), g.origin_m().y() + g.height() * g.resolution_m());
+  std::uniform_real_distribution<double> ux(g.origin_m().x(),
+                                            g.origin_m().x() + g.width() * g.resolution_m());
+  std::uniform_real_distribution<double> uy(g.origin_m().y(),
+                                            g.origin_m().y() + g.height() * g.resolution_m());
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   int tested = 0;
   while (tested < poses) {
@@ -126,9 +132,11 @@ void expectSameAsReference(const World& w, int poses, std::uint32_t seed) {
     // Single beams at any elevation.
     for (int i = 0; i < 50; ++i) {
       const double az = 2.0 * M_PI * unit(rng), el = (unit(rng) - 0.5) * 40.0 * kDeg;
-      const ReferenceHit ref = referenceCast(columns, origin.head<2>(), origin.z(), std::cos(az), std::sin(az), el, 100.0);
+      const ReferenceHit ref = referenceCast(columns, origin.head<2>(), origin.z(), std::cos(az),
+                                             std::sin(az), el, 100.0);
       const auto hit = lidar.castRay(origin, az, el, 100.0);
-      ASSERT_EQ(hit.has_value(), ref.t_m >= 0.0) << pose.x_m << " " << pose.y_m << " az " << az << " el " << el;
+      ASSERT_EQ(hit.has_value(), ref.t_m >= 0.0)
+          << pose.x_m << " " << pose.y_m << " az " << az << " el " << el;
       if (hit) {
         EXPECT_EQ(hit->range_m, ref.t_m / std::cos(el));
         EXPECT_EQ(hit->surface, ref.surface);
@@ -141,15 +149,18 @@ void expectSameAsReference(const World& w, int poses, std::uint32_t seed) {
     for (int c = 0; c < lidar.columns(); ++c) {
       const double a = 2.0 * M_PI * c / lidar.columns(), ca = std::cos(a), sa = std::sin(a);
       for (int k = 0; k < o.num_rings; ++k) {
-        const double e = (o.elevation_min_deg + (o.elevation_max_deg - o.elevation_min_deg) * k / (o.num_rings - 1)) *
+        const double e = (o.elevation_min_deg +
+                          (o.elevation_max_deg - o.elevation_min_deg) * k / (o.num_rings - 1)) *
                          (M_PI / 180.0);
         const ReferenceHit ref =
-            referenceCast(columns, origin.head<2>(), origin.z(), cy * ca - sy * sa, sy * ca + cy * sa, e, o.range_max_m);
+            referenceCast(columns, origin.head<2>(), origin.z(), cy * ca - sy * sa,
+                          sy * ca + cy * sa, e, o.range_max_m);
         if (ref.t_m < 0.0) continue;
         const double r = ref.t_m / std::cos(e);
         if (r < o.range_min_m || r > o.range_max_m) continue;
         ASSERT_LT(next, scan.points_sensor.size());
-        const Eigen::Vector3f expected(static_cast<float>(1.0 * ref.t_m * ca), static_cast<float>(1.0 * ref.t_m * sa),
+        const Eigen::Vector3f expected(static_cast<float>(1.0 * ref.t_m * ca),
+                                       static_cast<float>(1.0 * ref.t_m * sa),
                                        static_cast<float>(1.0 * ref.dz_m));
         ASSERT_EQ(scan.points_sensor[next], expected) << "column " << c << " ring " << k;
         ASSERT_EQ(scan.surfaces[next], ref.surface);
@@ -173,7 +184,8 @@ TEST(LidarSimulator, SameHitsAsThePlainCastWithMoreKindsOfColumnThanItsTable) {
   w.walls.push_back({{10, 4.5}, {10, 5.5}, 0.2, 2.0, 2.5});
   for (int i = 0; i < 48; ++i) {
     const double x = 1.0 + (i % 8) * 0.6, y = 1.0 + (i / 8) * 0.5, top = 0.3 + 0.04 * i;
-    w.furniture.push_back({"box", {{x, y}, {x + 0.2, y}, {x + 0.2, y + 0.2}, {x, y + 0.2}}, 0.1, top});
+    w.furniture.push_back(
+        {"box", {{x, y}, {x + 0.2, y}, {x + 0.2, y + 0.2}, {x, y + 0.2}}, 0.1, top});
   }
   expectSameAsReference(w, 4, 11);
 }
@@ -319,11 +331,13 @@ TEST(LidarSimulator, DeterministicForASeed) {
   const ColumnWorld columns(model);
   const LidarOptions options;
   const RangeNoise noise{.sd_near_m = 0.03};
-  LidarSimulator a(columns, options, 11, noise), b(columns, options, 11, noise), c(columns, options, 12, noise);
+  LidarSimulator a(columns, options, 11, noise), b(columns, options, 11, noise),
+      c(columns, options, 12, noise);
   const Pose2 pose{5.0, 5.0, 0.0};
   const LidarScan sa = a.scan(pose), sb = b.scan(pose), sc = c.scan(pose);
   ASSERT_EQ(sa.points_sensor.size(), sb.points_sensor.size());
-  for (std::size_t i = 0; i < sa.points_sensor.size(); ++i) ASSERT_EQ(sa.points_sensor[i], sb.points_sensor[i]);
+  for (std::size_t i = 0; i < sa.points_sensor.size(); ++i)
+    ASSERT_EQ(sa.points_sensor[i], sb.points_sensor[i]);
   bool differs = false;
   for (std::size_t i = 0; i < std::min(sa.points_sensor.size(), sc.points_sensor.size()); ++i) {
     differs |= sa.points_sensor[i] != sc.points_sensor[i];

@@ -80,7 +80,8 @@ TEST(ExplorationRateCounter, IncrementalRateEqualsFullRecount) {
   OccupancyMapper mapper(grid);
   LaserSimulator laser(model, LaserOptions{}, 3);
   ExplorationRateCounter counter(truth);
-  for (const Pose2& pose : {Pose2{2.0, 2.5, 0.0}, Pose2{5.0, 2.5, 0.0}, Pose2{7.0, 2.5, 0.0}, Pose2{10.0, 1.0, 0.0}}) {
+  for (const Pose2& pose :
+       {Pose2{2.0, 2.5, 0.0}, Pose2{5.0, 2.5, 0.0}, Pose2{7.0, 2.5, 0.0}, Pose2{10.0, 1.0, 0.0}}) {
     CellRect changed;
     for (int i = 0; i < 2; ++i) changed.unite(mapper.integrate(laser.scan(pose), pose));
     counter.update(grid, changed);

@@ -14,7 +14,8 @@ void drive(PointCloudObserver& observer, const WorldModel& model, double seconds
     const double t = i * 0.05;
     observer.onStep(EpisodeSnapshot{t, Pose2{2.0 + 0.2 * t, 2.5, 0.0}, grid, model, false});
   }
-  observer.onFinish(EpisodeSnapshot{seconds, Pose2{2.0 + 0.2 * seconds, 2.5, 0.0}, grid, model, true});
+  observer.onFinish(
+      EpisodeSnapshot{seconds, Pose2{2.0 + 0.2 * seconds, 2.5, 0.0}, grid, model, true});
 }
 
 TEST(PointCloudObserver, InsertsKeyframesOnlyAndTimesThem) {
@@ -30,7 +31,8 @@ TEST(PointCloudObserver, InsertsKeyframesOnlyAndTimesThem) {
   for (const Eigen::Vector3f& p : observer.map().points()) {
     ASSERT_TRUE(observer.columns().nearSurface(p.cast<double>(), 0.05)) << p.transpose();
   }
-  EXPECT_NE(observer.description().find("keyframes: every 1 m, or 0.2 rad after 0.1 m"), std::string::npos);
+  EXPECT_NE(observer.description().find("keyframes: every 1 m, or 0.2 rad after 0.1 m"),
+            std::string::npos);
 }
 
 TEST(PointCloudObserver, FloorAndCeilingKeptByDefaultOrRemoved) {

@@ -34,7 +34,9 @@ TEST(MapPrecision, CountsOccupiedCellsOnOrNextToTrueWalls) {
   const GridGeometry g = mapGeometryFor(world, 0.05);
   OccupancyGrid map(g);
   EXPECT_EQ(mapPrecision(map, world), 1.0);  // nothing occupied
-  auto mark = [&](double x, double y) { map.setState(g.index(g.cellOf(Vec2(x, y))), CellState::kOccupied); };
+  auto mark = [&](double x, double y) {
+    map.setState(g.index(g.cellOf(Vec2(x, y))), CellState::kOccupied);
+  };
   for (double y = 1.0; y < 9.0; y += 0.05) mark(0.125, y);  // on the west wall's face: 160 cells
   for (double y = 1.0; y < 3.0; y += 0.05) mark(0.175, y);  // one cell off it: 40 cells
   for (double y = 1.0; y < 3.0; y += 0.05) mark(5.0, y);    // mid-room: 40 false cells

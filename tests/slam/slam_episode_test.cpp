@@ -10,8 +10,8 @@
 namespace roomscout::sim {
 namespace {
 
-EpisodeResult exploreSmallHouse(const std::string& method, const std::string& noise, const std::string& slam,
-                                std::uint64_t seed) {
+EpisodeResult exploreSmallHouse(const std::string& method, const std::string& noise,
+                                const std::string& slam, std::uint64_t seed) {
   EpisodeConfig config;
   config.noise.profile = noise;
   config.slam.mode = slam;
@@ -47,7 +47,8 @@ TEST_P(NoisySlamEpisode, Tb3NoiseWithIcpExploresMostOfTheSmallHouse) {
   EXPECT_FALSE(r.slam->diverged);
 }
 
-INSTANTIATE_TEST_SUITE_P(Methods, NoisySlamEpisode, ::testing::Values("nearest_frontier", "semantic"));
+INSTANTIATE_TEST_SUITE_P(Methods, NoisySlamEpisode,
+                         ::testing::Values("nearest_frontier", "semantic"));
 
 TEST(SlamEpisode, WithoutSlamThereIsNoSlamRecordAndTheEstimateIsTheTruth) {
   const EpisodeResult r = exploreSmallHouse("nearest_frontier", "tb3", "none", 1);

@@ -19,24 +19,29 @@ namespace {
 struct DriveResult {
   double max_position_error_m = 0.0;
   double max_heading_error_rad = 0.0;
-  double max_odometry_error_m = 0.0;  ///< of the odometry alone
-  double max_first_leg_error_m = 0.0; ///< along the first leg, inside the first room
+  double max_odometry_error_m = 0.0;   ///< of the odometry alone
+  double max_first_leg_error_m = 0.0;  ///< along the first leg, inside the first room
   int scans = 0;
 };
 
-DriveResult drive(Slam& slam, const sim::WorldModel& world, const sim::OdometryNoise& odometry_noise,
-                  const sim::RangeNoise& range_noise, std::uint64_t seed) {
+DriveResult drive(Slam& slam, const sim::WorldModel& world,
+                  const sim::OdometryNoise& odometry_noise, const sim::RangeNoise& range_noise,
+                  std::uint64_t seed) {
   sim::LaserSimulator laser(world, sim::LaserOptions{}, seed, range_noise);
   Pose2 truth = world.start();
   sim::OdometrySimulator odometry(odometry_noise, truth, seed + 1);
   DriveResult r;
-  const std::vector<Vec2> legs = {{4.0, 2.5}, {8.0, 2.5}, {10.5, 1.0}, {10.5, 4.0}, {7.0, 2.5}, {2.0, 2.5}};
+  const std::vector<Vec2> legs = {{4.0, 2.5},  {8.0, 2.5}, {10.5, 1.0},
+                                  {10.5, 4.0}, {7.0, 2.5}, {2.0, 2.5}};
   auto sense = [&] {
     slam.update(laser.scan(truth), odometry.pose());
     const Pose2 estimate = slam.pose(odometry.pose());
-    r.max_position_error_m = std::max(r.max_position_error_m, (estimate.position() - truth.position()).norm());
-    r.max_heading_error_rad = std::max(r.max_heading_error_rad, std::abs(wrapAngle(estimate.yaw_rad - truth.yaw_rad)));
-    r.max_odometry_error_m = std::max(r.max_odometry_error_m, (odometry.pose().position() - truth.position()).norm());
+    r.max_position_error_m =
+        std::max(r.max_position_error_m, (estimate.position() - truth.position()).norm());
+    r.max_heading_error_rad =
+        std::max(r.max_heading_error_rad, std::abs(wrapAngle(estimate.yaw_rad - truth.yaw_rad)));
+    r.max_odometry_error_m =
+        std::max(r.max_odometry_error_m, (odometry.pose().position() - truth.position()).norm());
     ++r.scans;
   };
   sense();

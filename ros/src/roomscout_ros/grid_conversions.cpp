@@ -25,25 +25,29 @@ double decimalOf(float value) {
 
 }  // namespace
 
-ReceivedGrid fromMsg(const nav_msgs::OccupancyGrid& msg, const OccupancyGrid* previous, int occupied_percent,
-                     int free_percent) {
+ReceivedGrid fromMsg(const nav_msgs::OccupancyGrid& msg, const OccupancyGrid* previous,
+                     int occupied_percent, int free_percent) {
   const auto& info = msg.info;
   const auto& q = info.origin.orientation;
   if (!(std::isfinite(info.resolution) && info.resolution > 0.0f)) {
-    throw InvalidArgument("map message: resolution " + std::to_string(info.resolution) + " is not > 0");
+    throw InvalidArgument("map message: resolution " + std::to_string(info.resolution) +
+                          " is not > 0");
   }
-  if (info.width == 0 || info.height == 0) throw InvalidArgument("map message: the map is empty (0 cells)");
+  if (info.width == 0 || info.height == 0)
+    throw InvalidArgument("map message: the map is empty (0 cells)");
   if (msg.data.size() != static_cast<std::size_t>(info.width) * info.height) {
-    throw InvalidArgument("map message: " + std::to_string(msg.data.size()) + " cells of data for a " +
-                          std::to_string(info.width) + " x " + std::to_string(info.height) + " map");
+    throw InvalidArgument("map message: " + std::to_string(msg.data.size()) +
+                          " cells of data for a " + std::to_string(info.width) + " x " +
+                          std::to_string(info.height) + " map");
   }
   const double yaw = yawOf(q.x, q.y, q.z, q.w);
   if (std::abs(yaw) > 1e-6 || std::abs(q.x) > 1e-6 || std::abs(q.y) > 1e-6) {
     throw InvalidArgument("map message: the origin is rotated (yaw " + std::to_string(yaw) +
                           " rad); only maps aligned with their frame are supported");
   }
-  const GridGeometry geometry(Vec2(info.origin.position.x, info.origin.position.y), decimalOf(info.resolution),
-                              static_cast<int>(info.width), static_cast<int>(info.height));
+  const GridGeometry geometry(Vec2(info.origin.position.x, info.origin.position.y),
+                              decimalOf(info.resolution), static_cast<int>(info.width),
+                              static_cast<int>(info.height));
   ReceivedGrid out{OccupancyGrid(geometry), std::nullopt};
   const std::size_t n = msg.data.size();
   for (std::size_t i = 0; i < n; ++i) {
@@ -84,9 +88,12 @@ void toMsg(const OccupancyGrid& grid, nav_msgs::OccupancyGrid& msg) {
   for (std::size_t i = 0; i < n; ++i) msg.data[i] = kValue[states[i]];
 }
 
-void labelsToMsg(const cv::Mat& labels, const GridGeometry& geometry, nav_msgs::OccupancyGrid& msg) {
-  if (labels.type() != CV_32S || labels.rows != geometry.height() || labels.cols != geometry.width()) {
-    throw InvalidArgument("room labels: expected a CV_32S image of " + std::to_string(geometry.width()) + " x " +
+void labelsToMsg(const cv::Mat& labels, const GridGeometry& geometry,
+                 nav_msgs::OccupancyGrid& msg) {
+  if (labels.type() != CV_32S || labels.rows != geometry.height() ||
+      labels.cols != geometry.width()) {
+    throw InvalidArgument("room labels: expected a CV_32S image of " +
+                          std::to_string(geometry.width()) + " x " +
                           std::to_string(geometry.height()) + " cells");
   }
   msg.info.resolution = static_cast<float>(geometry.resolution_m());
@@ -98,7 +105,8 @@ void labelsToMsg(const cv::Mat& labels, const GridGeometry& geometry, nav_msgs::
   for (int y = 0; y < labels.rows; ++y) {
     const int* row = labels.ptr<int>(y);
     for (int x = 0; x < labels.cols; ++x, ++i) {
-      msg.data[i] = row[x] <= 0 ? std::int8_t{-1} : static_cast<std::int8_t>((row[x] - 1) % 100 + 1);
+      msg.data[i] =
+          row[x] <= 0 ? std::int8_t{-1} : static_cast<std::int8_t>((row[x] - 1) % 100 + 1);
     }
   }
 }

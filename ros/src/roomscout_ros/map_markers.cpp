@@ -9,8 +9,8 @@
 namespace roomscout::ros1 {
 namespace {
 
-visualization_msgs::Marker makeMarker(const std::string& frame, const ros::Time& stamp, const std::string& ns,
-                                      int id, int type) {
+visualization_msgs::Marker makeMarker(const std::string& frame, const ros::Time& stamp,
+                                      const std::string& ns, int id, int type) {
   visualization_msgs::Marker m;
   m.header.frame_id = frame;
   m.header.stamp = stamp;
@@ -58,7 +58,7 @@ visualization_msgs::MarkerArray roomMarkers(const SemanticMap& rooms, const std:
   for (const SemanticRegion& r : rooms.regions()) labelled += r.cell_count;
   // Every k-th cell on both axes keeps the markers within max_cells.
   const int k = std::max(1, static_cast<int>(std::ceil(std::sqrt(static_cast<double>(labelled) /
-                                                                  std::max(1, max_cells)))));
+                                                                 std::max(1, max_cells)))));
   for (const SemanticRegion& r : rooms.regions()) {
     visualization_msgs::Marker cells =
         makeMarker(frame, stamp, "room_cells", r.id, visualization_msgs::Marker::CUBE_LIST);
@@ -94,8 +94,8 @@ visualization_msgs::MarkerArray roomMarkers(const SemanticMap& rooms, const std:
   return out;
 }
 
-visualization_msgs::MarkerArray skeletonMarkers(const TopologicalMap& graph, const std::string& frame,
-                                                const ros::Time& stamp) {
+visualization_msgs::MarkerArray skeletonMarkers(const TopologicalMap& graph,
+                                                const std::string& frame, const ros::Time& stamp) {
   visualization_msgs::MarkerArray out;
   out.markers.push_back(deleteAll(frame, stamp));
   visualization_msgs::Marker edges =
@@ -115,9 +115,15 @@ visualization_msgs::MarkerArray skeletonMarkers(const TopologicalMap& graph, con
   for (const TopoNode& n : graph.nodes()) {
     nodes.points.push_back(point(n.position_m, 0.05));
     switch (n.kind) {
-      case TopoNodeKind::kJunction: nodes.colors.push_back(colour({30, 90, 220}, 1.0f)); break;
-      case TopoNodeKind::kEndpoint: nodes.colors.push_back(colour({120, 120, 120}, 1.0f)); break;
-      case TopoNodeKind::kFrontier: nodes.colors.push_back(colour({240, 140, 20}, 1.0f)); break;
+      case TopoNodeKind::kJunction:
+        nodes.colors.push_back(colour({30, 90, 220}, 1.0f));
+        break;
+      case TopoNodeKind::kEndpoint:
+        nodes.colors.push_back(colour({120, 120, 120}, 1.0f));
+        break;
+      case TopoNodeKind::kFrontier:
+        nodes.colors.push_back(colour({240, 140, 20}, 1.0f));
+        break;
     }
   }
   if (!nodes.points.empty()) out.markers.push_back(std::move(nodes));
@@ -127,7 +133,8 @@ visualization_msgs::MarkerArray skeletonMarkers(const TopologicalMap& graph, con
 visualization_msgs::Marker pointsMarker(const std::vector<Vec2>& points_m, const std::string& ns,
                                         const std::array<float, 4>& rgba, double diameter_m,
                                         const std::string& frame, const ros::Time& stamp) {
-  visualization_msgs::Marker m = makeMarker(frame, stamp, ns, 0, visualization_msgs::Marker::SPHERE_LIST);
+  visualization_msgs::Marker m =
+      makeMarker(frame, stamp, ns, 0, visualization_msgs::Marker::SPHERE_LIST);
   if (points_m.empty()) {
     m.action = visualization_msgs::Marker::DELETE;
     return m;

@@ -26,8 +26,8 @@ visualization_msgs::MarkerArray roomMarkers(const SemanticMap& rooms, const std:
 /// The skeleton graph: a DELETEALL, then its edges as one LINE_LIST along their polylines
 /// ("skeleton_edges") and its nodes as one SPHERE_LIST ("skeleton_nodes": junctions blue,
 /// endpoints grey, frontier nodes orange).
-visualization_msgs::MarkerArray skeletonMarkers(const TopologicalMap& graph, const std::string& frame,
-                                                const ros::Time& stamp);
+visualization_msgs::MarkerArray skeletonMarkers(const TopologicalMap& graph,
+                                                const std::string& frame, const ros::Time& stamp);
 
 /// Points as one SPHERE_LIST (or, with none, a DELETE of that marker), in `ns` with id 0.
 visualization_msgs::Marker pointsMarker(const std::vector<Vec2>& points_m, const std::string& ns,

@@ -8,13 +8,15 @@
 
 namespace roomscout::ros1 {
 
-void saveMaps(const std::filesystem::path& directory, const OccupancyGrid& grid, const AnalysisMap& rooms,
-              const AnalysisMap& skeleton, const std::vector<Eigen::Vector3f>& cloud_points, double cloud_top_m) {
+void saveMaps(const std::filesystem::path& directory, const OccupancyGrid& grid,
+              const AnalysisMap& rooms, const AnalysisMap& skeleton,
+              const std::vector<Eigen::Vector3f>& cloud_points, double cloud_top_m) {
   io::ensureWritableDirectory(directory);
   io::saveOccupancyMap(grid, directory / "occupancy.yaml");
   io::writePcdAtomic(directory / "pointcloud.pcd", cloud_points, io::PcdFormat::kBinaryCompressed,
                      "roomscout point cloud map, map frame of occupancy.yaml", 0.005);
-  io::writeImageAtomic(directory / "pointcloud.png", io::renderPointCloud(cloud_points, cloud_top_m));
+  io::writeImageAtomic(directory / "pointcloud.png",
+                       io::renderPointCloud(cloud_points, cloud_top_m));
   io::writeAnalysisMaps(directory, rooms, skeleton, grid, nullptr);
 }
 

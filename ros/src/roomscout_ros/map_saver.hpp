@@ -17,7 +17,8 @@ namespace roomscout::ros1 {
 /// Writes the maps into `directory` (created if needed). `cloud_top_m` clips the point cloud's
 /// picture from above (e.g. just under the ceiling). Throws InputError naming the folder or
 /// file that could not be written.
-void saveMaps(const std::filesystem::path& directory, const OccupancyGrid& grid, const AnalysisMap& rooms,
-              const AnalysisMap& skeleton, const std::vector<Eigen::Vector3f>& cloud_points, double cloud_top_m);
+void saveMaps(const std::filesystem::path& directory, const OccupancyGrid& grid,
+              const AnalysisMap& rooms, const AnalysisMap& skeleton,
+              const std::vector<Eigen::Vector3f>& cloud_points, double cloud_top_m);
 
 }  // namespace roomscout::ros1

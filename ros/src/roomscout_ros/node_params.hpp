@@ -14,11 +14,16 @@ namespace roomscout::ros1 {
 /// How an error message names the type a parameter must have.
 template <class T>
 constexpr const char* expectedType() {
-  if constexpr (std::is_same_v<T, bool>) return "true or false";
-  else if constexpr (std::is_same_v<T, int>) return "an integer";
-  else if constexpr (std::is_same_v<T, double>) return "a number";
-  else if constexpr (std::is_same_v<T, std::string>) return "a string";
-  else static_assert(sizeof(T) == 0, "typedParam reads bool, int, double or std::string");
+  if constexpr (std::is_same_v<T, bool>)
+    return "true or false";
+  else if constexpr (std::is_same_v<T, int>)
+    return "an integer";
+  else if constexpr (std::is_same_v<T, double>)
+    return "a number";
+  else if constexpr (std::is_same_v<T, std::string>)
+    return "a string";
+  else
+    static_assert(sizeof(T) == 0, "typedParam reads bool, int, double or std::string");
 }
 
 /// The parameter `name` if set, else `fallback`. Throws OptionError ("~name must be a

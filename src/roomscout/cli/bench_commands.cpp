@@ -68,10 +68,10 @@ std::vector<std::filesystem::path> reportInto(const std::vector<std::filesystem:
                                               const experiment::ReportSettings& settings) {
   const experiment::ReportOutput report = experiment::runReport(inputs, out, settings);
   if (report.duplicates > 0) {
-    std::fprintf(
-        stderr,
-        "roomscout: note: %zu records repeat an earlier (world, method, seed, setting); kept the first\n",
-        report.duplicates);
+    std::fprintf(stderr,
+                 "roomscout: note: %zu records repeat an earlier (world, method, seed, setting); "
+                 "kept the first\n",
+                 report.duplicates);
   }
   if (report.truncated > 0) {
     std::fprintf(

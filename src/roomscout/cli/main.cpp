@@ -28,13 +28,15 @@ namespace {
 /// A one-line progress bar on a terminal; silent when stderr is not a terminal.
 class ProgressBar {
  public:
-  explicit ProgressBar(std::string label) : label_(std::move(label)), enabled_(isatty(STDERR_FILENO) != 0) {}
+  explicit ProgressBar(std::string label)
+      : label_(std::move(label)), enabled_(isatty(STDERR_FILENO) != 0) {}
   void update(double time_s, double max_time_s, double rate) {
     if (!enabled_) return;
     const int width = 30;
     const int filled = static_cast<int>(std::min(1.0, rate) * width);
-    std::fprintf(stderr, "\r%s [%.*s%*s] explored %5.1f %%  sim %6.0f s / %.0f s", label_.c_str(), filled,
-                 "##############################", width - filled, "", rate * 100.0, time_s, max_time_s);
+    std::fprintf(stderr, "\r%s [%.*s%*s] explored %5.1f %%  sim %6.0f s / %.0f s", label_.c_str(),
+                 filled, "##############################", width - filled, "", rate * 100.0, time_s,
+                 max_time_s);
     std::fflush(stderr);
     drawn_ = true;
   }
@@ -100,8 +102,9 @@ int runExplore(const ExploreArgs& args) {
   experiment::RecordedEpisode recorded;
   {
     ProgressBar bar(world.name + " " + args.method);
-    recorded = experiment::runRecordedEpisode(model, setup, settings, args.out,
-                                              [&](double t, double max_t, double rate) { bar.update(t, max_t, rate); });
+    recorded = experiment::runRecordedEpisode(
+        model, setup, settings, args.out,
+        [&](double t, double max_t, double rate) { bar.update(t, max_t, rate); });
   }
   const sim::EpisodeResult& result = recorded.result;
 
@@ -111,11 +114,12 @@ int runExplore(const ExploreArgs& args) {
     std::snprintf(buf, sizeof buf, "%.1f %s", *v, unit);
     return std::string(buf);
   };
-  const std::string revisits =
-      result.room_truth ? std::to_string(result.revisits) + " revisits" : std::string("no ground-truth rooms");
+  const std::string revisits = result.room_truth ? std::to_string(result.revisits) + " revisits"
+                                                 : std::string("no ground-truth rooms");
   std::printf("%s %s seed %llu: explored %.1f %%, T98 %s, L98 %s, done %s, %s, %.2f s wall -> %s\n",
               world.name.c_str(), args.method.c_str(), static_cast<unsigned long long>(args.seed),
-              result.exploration_rate * 100.0, fmt(result.t98_s, "s").c_str(), fmt(result.l98_m, "m").c_str(),
+              result.exploration_rate * 100.0, fmt(result.t98_s, "s").c_str(),
+              fmt(result.l98_m, "m").c_str(),
               result.timed_out ? "timed out" : fmt(result.t_done_s, "s").c_str(), revisits.c_str(),
               result.wall_time_s, args.out.c_str());
   out.keep();
@@ -142,30 +146,42 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
 
   cli::ExploreArgs explore;
-  auto* explore_cmd = app.add_subcommand("explore", "Explore one world with one method and write its maps");
-  explore_cmd->add_option("--world", explore.world, "built-in world name, world YAML, or map_server YAML")->required();
-  explore_cmd->add_option("--method", explore.method, "exploration method (see `roomscout methods`)")
+  auto* explore_cmd =
+      app.add_subcommand("explore", "Explore one world with one method and write its maps");
+  explore_cmd
+      ->add_option("--world", explore.world, "built-in world name, world YAML, or map_server YAML")
+      ->required();
+  explore_cmd
+      ->add_option("--method", explore.method, "exploration method (see `roomscout methods`)")
       ->capture_default_str();
   explore_cmd->add_option("--seed", explore.seed, "seed of every random choice (an integer >= 0)")
       ->check(CLI::Validator(
           [](std::string& text) {
             // CLI11 would wrap a negative number round into a huge unsigned seed.
-            return text.find('-') == std::string::npos ? std::string() : "must be an integer >= 0, got " + text;
+            return text.find('-') == std::string::npos ? std::string()
+                                                       : "must be an integer >= 0, got " + text;
           },
           "INT>=0"))
       ->capture_default_str();
   explore_cmd->add_option("--out", explore.out, "output directory")->required();
-  explore_cmd->add_option("--config", explore.config, "YAML file of options, grouped as in metrics.json");
+  explore_cmd->add_option("--config", explore.config,
+                          "YAML file of options, grouped as in metrics.json");
   explore_cmd->add_option("--max-time", explore.max_time_s, "simulated time limit [s]");
-  explore_cmd->add_option("--start", explore.start, "start pose X,Y,YAW [m, m, rad] for map_server worlds");
-  explore_cmd->add_option("--room-labels", explore.room_labels, "room label image for a map_server world");
-  explore_cmd->add_option("--pcd-format", explore.pcd_format, "pointcloud.pcd encoding: ascii, binary, binary_compressed")
+  explore_cmd->add_option("--start", explore.start,
+                          "start pose X,Y,YAW [m, m, rad] for map_server worlds");
+  explore_cmd->add_option("--room-labels", explore.room_labels,
+                          "room label image for a map_server world");
+  explore_cmd
+      ->add_option("--pcd-format", explore.pcd_format,
+                   "pointcloud.pcd encoding: ascii, binary, binary_compressed")
       ->capture_default_str();
-  explore_cmd->add_option("--pcd-precision", explore.pcd_precision_m,
-                          "pointcloud.pcd coordinates rounded to multiples of this [m]; 0 = exact")
+  explore_cmd
+      ->add_option("--pcd-precision", explore.pcd_precision_m,
+                   "pointcloud.pcd coordinates rounded to multiples of this [m]; 0 = exact")
       ->capture_default_str();
-  explore_cmd->add_flag("--pointcloud-remove-floor", explore.remove_floor,
-                        "leave the floor and ceiling out of pointcloud.pcd (kept by default, as in LIO-SAM)");
+  explore_cmd->add_flag(
+      "--pointcloud-remove-floor", explore.remove_floor,
+      "leave the floor and ceiling out of pointcloud.pcd (kept by default, as in LIO-SAM)");
 
   auto* worlds_cmd = app.add_subcommand("worlds", "List the built-in worlds");
   auto* methods_cmd = app.add_subcommand("methods", "List the exploration methods");
@@ -187,7 +203,8 @@ int main(int argc, char** argv) {
     if (bench_cmd.app->parsed()) return bench_cmd.run();
     if (report_cmd.app->parsed()) return report_cmd.run();
     if (methods_cmd->parsed()) {
-      for (const StrategyEntry& e : strategyRegistry()) std::printf("%-18s %s\n", e.name.c_str(), e.description.c_str());
+      for (const StrategyEntry& e : strategyRegistry())
+        std::printf("%-18s %s\n", e.name.c_str(), e.description.c_str());
       return 0;
     }
   } catch (const InputError& e) {

@@ -55,8 +55,8 @@ int runMaps(const MapsArgs& args) {
   io::writeTopologicalMap(args.out, topology, grid);
   io::writeSemanticMap(args.out, semantic, grid);
   std::printf("%s: %zu rooms (%.1f ms), %zu nodes, %zu edges (%.1f ms) -> %s\n", args.map.c_str(),
-              semantic.regions().size(), semantic_ms, topology.nodes().size(), topology.edges().size(), topology_ms,
-              args.out.c_str());
+              semantic.regions().size(), semantic_ms, topology.nodes().size(),
+              topology.edges().size(), topology_ms, args.out.c_str());
   out.keep();
   return 0;
 }
@@ -65,7 +65,8 @@ int runMaps(const MapsArgs& args) {
 
 Subcommand addMapsCommand(CLI::App& app) {
   auto args = std::make_shared<MapsArgs>();
-  CLI::App* cmd = app.add_subcommand("maps", "Build topological and semantic maps of an occupancy map");
+  CLI::App* cmd =
+      app.add_subcommand("maps", "Build topological and semantic maps of an occupancy map");
   cmd->add_option("--map", args->map, "map_server YAML (PGM/PNG image beside it)")->required();
   cmd->add_option("--out", args->out, "output directory")->required();
   cmd->add_option("--config", args->config, "YAML file with groups 'segmentation' and 'topology'");

@@ -58,13 +58,14 @@ class GridGeometry {
   }
   /// Centre of a cell in the map frame [m].
   Vec2 centerOf(Cell c) const {
-    return {origin_m_.x() + (c.x + 0.5) * resolution_m_, origin_m_.y() + (c.y + 0.5) * resolution_m_};
+    return {origin_m_.x() + (c.x + 0.5) * resolution_m_,
+            origin_m_.y() + (c.y + 0.5) * resolution_m_};
   }
   CellRect bounds() const { return {0, 0, width_, height_}; }
 
   friend bool operator==(const GridGeometry& a, const GridGeometry& b) {
-    return a.origin_m_ == b.origin_m_ && a.resolution_m_ == b.resolution_m_ && a.width_ == b.width_ &&
-           a.height_ == b.height_;
+    return a.origin_m_ == b.origin_m_ && a.resolution_m_ == b.resolution_m_ &&
+           a.width_ == b.width_ && a.height_ == b.height_;
   }
   friend bool operator!=(const GridGeometry& a, const GridGeometry& b) { return !(a == b); }
 

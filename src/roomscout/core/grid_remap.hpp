@@ -18,22 +18,25 @@ namespace roomscout {
 /// exactly; with another resolution, the nearest old cell is taken. Values of another size than
 /// `from` (never laid on it, e.g. empty) give `fill` everywhere.
 template <class T>
-std::vector<T> remapCells(const std::vector<T>& values, const GridGeometry& from, const GridGeometry& to,
-                          T fill = T{}) {
+std::vector<T> remapCells(const std::vector<T>& values, const GridGeometry& from,
+                          const GridGeometry& to, T fill = T{}) {
   std::vector<T> out(to.cellCount(), fill);
   if (values.empty() || values.size() != from.cellCount()) return out;
   // The grids are axis-aligned: a column of `to` maps to one column of `from`, a row to a row.
-  auto source = [](double origin_to, double origin_from, int i, double res_to, double res_from, int n) {
-    const int j = static_cast<int>(std::floor((origin_to + (i + 0.5) * res_to - origin_from) / res_from));
+  auto source = [](double origin_to, double origin_from, int i, double res_to, double res_from,
+                   int n) {
+    const int j =
+        static_cast<int>(std::floor((origin_to + (i + 0.5) * res_to - origin_from) / res_from));
     return j >= 0 && j < n ? j : -1;
   };
   std::vector<int> column(static_cast<std::size_t>(to.width()));
   for (int x = 0; x < to.width(); ++x) {
-    column[x] = source(to.origin_m().x(), from.origin_m().x(), x, to.resolution_m(), from.resolution_m(), from.width());
+    column[x] = source(to.origin_m().x(), from.origin_m().x(), x, to.resolution_m(),
+                       from.resolution_m(), from.width());
   }
   for (int y = 0; y < to.height(); ++y) {
-    const int fy = source(to.origin_m().y(), from.origin_m().y(), y, to.resolution_m(), from.resolution_m(),
-                          from.height());
+    const int fy = source(to.origin_m().y(), from.origin_m().y(), y, to.resolution_m(),
+                          from.resolution_m(), from.height());
     if (fy < 0) continue;
     const std::size_t row = static_cast<std::size_t>(y) * to.width();
     const std::size_t from_row = static_cast<std::size_t>(fy) * from.width();
@@ -64,8 +67,8 @@ class GeometryWatch {
 
 /// The corner of `geometry` opposite its origin [m].
 inline Vec2 farCorner(const GridGeometry& geometry) {
-  return geometry.origin_m() +
-         Vec2(geometry.width() * geometry.resolution_m(), geometry.height() * geometry.resolution_m());
+  return geometry.origin_m() + Vec2(geometry.width() * geometry.resolution_m(),
+                                    geometry.height() * geometry.resolution_m());
 }
 
 }  // namespace roomscout

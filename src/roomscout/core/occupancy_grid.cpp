@@ -33,7 +33,9 @@ std::vector<ParameterRef> OccupancyGridOptions::parameters() {
 }
 
 OccupancyGrid::OccupancyGrid(const GridGeometry& geometry, const OccupancyGridOptions& options)
-    : geometry_(geometry), options_(options), log_odds_(geometry.cellCount(), 0.0f),
+    : geometry_(geometry),
+      options_(options),
+      log_odds_(geometry.cellCount(), 0.0f),
       states_(geometry.cellCount(), CellState::kUnknown) {
   options_.validate();
   hit_ = static_cast<float>(options_.log_odds_hit);
@@ -46,9 +48,15 @@ OccupancyGrid::OccupancyGrid(const GridGeometry& geometry, const OccupancyGridOp
 
 void OccupancyGrid::setState(std::size_t index, CellState state) {
   switch (state) {
-    case CellState::kUnknown: log_odds_[index] = 0.0f; break;
-    case CellState::kFree: log_odds_[index] = min_; break;
-    case CellState::kOccupied: log_odds_[index] = max_; break;
+    case CellState::kUnknown:
+      log_odds_[index] = 0.0f;
+      break;
+    case CellState::kFree:
+      log_odds_[index] = min_;
+      break;
+    case CellState::kOccupied:
+      log_odds_[index] = max_;
+      break;
   }
   states_[index] = classify(log_odds_[index]);
 }
@@ -71,8 +79,8 @@ OccupancyGrid OccupancyGrid::reframed(const GridGeometry& geometry) const {
   const Cell d = latticeOffset(geometry);
   // Keep this grid's origin exactly where the lattices coincide, so that cellOf() agrees.
   const double res = geometry_.resolution_m();
-  const GridGeometry aligned(geometry_.origin_m() + Vec2(d.x * res, d.y * res), res, geometry.width(),
-                             geometry.height());
+  const GridGeometry aligned(geometry_.origin_m() + Vec2(d.x * res, d.y * res), res,
+                             geometry.width(), geometry.height());
   OccupancyGrid out(aligned, options_);
   out.copyCells(*this, geometry_.bounds());
   return out;
@@ -82,8 +90,10 @@ void OccupancyGrid::copyCells(const OccupancyGrid& source, const CellRect& rect)
   // Source cell (x, y) lands on this grid's cell (x - d.x, y - d.y).
   const Cell d = source.latticeOffset(geometry_);
   const CellRect in_source = rect.clippedTo(source.geometry_.width(), source.geometry_.height());
-  const int x0 = std::max(in_source.min_x, d.x), x1 = std::min(in_source.max_x, d.x + geometry_.width());
-  const int y0 = std::max(in_source.min_y, d.y), y1 = std::min(in_source.max_y, d.y + geometry_.height());
+  const int x0 = std::max(in_source.min_x, d.x),
+            x1 = std::min(in_source.max_x, d.x + geometry_.width());
+  const int y0 = std::max(in_source.min_y, d.y),
+            y1 = std::min(in_source.max_y, d.y + geometry_.height());
   for (int y = y0; y < y1 && x0 < x1; ++y) {
     const std::size_t from = source.geometry_.index({x0, y});
     const std::size_t to = geometry_.index({x0 - d.x, y - d.y});

@@ -14,20 +14,21 @@ namespace roomscout {
 /// table: 1 - state).
 enum class CellState : std::uint8_t { kUnknown = 0, kFree = 1, kOccupied = 2 };
 static_assert(sizeof(CellState) == 1);
-static_assert(static_cast<int>(CellState::kUnknown) == 0 && static_cast<int>(CellState::kFree) == 1 &&
+static_assert(static_cast<int>(CellState::kUnknown) == 0 &&
+              static_cast<int>(CellState::kFree) == 1 &&
               static_cast<int>(CellState::kOccupied) == 2);
 
 /// Log-odds update and classification constants of an OccupancyGrid.
 struct OccupancyGridOptions {
-  double resolution_m = 0.05;          ///< cell side [m]
-  double log_odds_hit = 1.6;           ///< added on a beam end point (p = 0.83): a hit outweighs
-                                       ///< four misses, so wall-face cells that grazing beams
-                                       ///< cross stay occupied instead of flickering to unknown
-  double log_odds_miss = -0.41;        ///< added on a cell a beam crossed (p = 0.40)
-  double log_odds_min = -2.0;          ///< clamp, so that a cell can change its mind
-  double log_odds_max = 3.5;           ///< clamp
-  double occupied_threshold = 0.62;    ///< log-odds above this: occupied (p > 0.65)
-  double free_threshold = -0.35;       ///< log-odds below this: free (p < 0.41; one scan's miss)
+  double resolution_m = 0.05;        ///< cell side [m]
+  double log_odds_hit = 1.6;         ///< added on a beam end point (p = 0.83): a hit outweighs
+                                     ///< four misses, so wall-face cells that grazing beams
+                                     ///< cross stay occupied instead of flickering to unknown
+  double log_odds_miss = -0.41;      ///< added on a cell a beam crossed (p = 0.40)
+  double log_odds_min = -2.0;        ///< clamp, so that a cell can change its mind
+  double log_odds_max = 3.5;         ///< clamp
+  double occupied_threshold = 0.62;  ///< log-odds above this: occupied (p > 0.65)
+  double free_threshold = -0.35;     ///< log-odds below this: free (p < 0.41; one scan's miss)
 
   /// Throws OptionError when a value is out of range.
   void validate() const;
@@ -73,7 +74,9 @@ class OccupancyGrid {
   /// Cell states as one byte per cell, row-major (for bulk analysis).
   const std::vector<CellState>& states() const { return states_; }
   /// The same bytes as plain integers (the CellState values), for counting and comparing.
-  const std::uint8_t* stateBytes() const { return reinterpret_cast<const std::uint8_t*>(states_.data()); }
+  const std::uint8_t* stateBytes() const {
+    return reinterpret_cast<const std::uint8_t*>(states_.data());
+  }
 
  private:
   void add(std::size_t index, float delta) {

@@ -25,7 +25,7 @@ struct RunSettings {
   bool remove_floor = false;          ///< overrides pointcloud.remove_floor_ceiling when set
   io::PcdFormat pcd_format = io::PcdFormat::kBinaryCompressed;  ///< pointcloud.pcd encoding
   double pcd_precision_m =
-      0.005;  ///< pointcloud.pcd coordinates rounded to multiples [m]; 0 = exact
+      0.005;                     ///< pointcloud.pcd coordinates rounded to multiples [m]; 0 = exact
   bool background_maps = false;  ///< build the maps the strategy does not read (point cloud;
                                  ///< skeleton and rooms unless it readsRooms()) on two
                                  ///< background threads; the outputs are the same either way

@@ -4,13 +4,13 @@
 
 #include <Eigen/Core>
 
+#include "roomscout/explorer/explorer.hpp"
 #include "roomscout/io/analysis_maps_output.hpp"
 #include "roomscout/io/atomic_file.hpp"
 #include "roomscout/io/options_yaml.hpp"
 #include "roomscout/io/pcd_io.hpp"
 #include "roomscout/io/point_cloud_render.hpp"
 #include "roomscout/io/run_outputs.hpp"
-#include "roomscout/explorer/explorer.hpp"
 #include "roomscout/sim/point_cloud_observer.hpp"
 
 namespace roomscout::experiment {
@@ -33,7 +33,8 @@ RecordedEpisode runRecordedEpisode(const sim::WorldModel& model, EpisodeSetup& s
   // episode's thread: on two cores the episode keeps a core and the workers share the other
   // and what it leaves. Declared before the observer, which waits for its jobs when it goes.
   MapWorker cloud_worker(settings.background_maps);
-  sim::PointCloudObserver cloud(model, setup.cloud, setup.seed ^ 0x5851F42D4C957F2Dull, &cloud_worker);
+  sim::PointCloudObserver cloud(model, setup.cloud, setup.seed ^ 0x5851F42D4C957F2Dull,
+                                &cloud_worker);
   ExplorerOptions options = sim::explorerOptionsFor(model, setup.config);
   options.all_maps = true;
   options.background_maps = settings.background_maps;
@@ -65,8 +66,8 @@ RecordedEpisode runRecordedEpisode(const sim::WorldModel& model, EpisodeSetup& s
     record["keyframes"] = cloud.keyframes();
     record["built"] = cloud.description();
   }
-  const nlohmann::json analysis_maps =
-      io::writeAnalysisMaps(directory, *explorer.roomMap(), *explorer.skeletonMap(), result.map, &model);
+  const nlohmann::json analysis_maps = io::writeAnalysisMaps(
+      directory, *explorer.roomMap(), *explorer.skeletonMap(), result.map, &model);
   for (const auto& [name, summary] : analysis_maps.items()) info.maps[name] = summary;
   io::writeRunOutputs(directory, info, result);
   recorded.metrics = io::metricsJson(info, result);

@@ -497,7 +497,8 @@ Report buildReport(const ResultSet& results) {
     s.l98_oracle_ratio = Stat::of(c.ratio);
   }
   // A row's cell repeats itself when each of its worlds run with several seeds had one outcome.
-  std::map<std::pair<std::string, std::string>, std::pair<bool, bool>> repeats;  // (several, all same)
+  std::map<std::pair<std::string, std::string>, std::pair<bool, bool>>
+      repeats;  // (several, all same)
   for (const EpisodeSummary* e : episodes) {
     const auto& [distinct, count] = outcomes.at({e->key.world, e->key.method});
     if (count < 2) continue;
@@ -670,7 +671,8 @@ plots::HtmlTable revisitsCells(const Report& report) {
       const auto it = report.table1.find({row.name, method});
       const bool has = it != report.table1.end();
       cells.push_back(has ? meanSd(it->second.revisits) : std::string("–"));
-      cells.push_back(has && it->second.revisits_98.n ? meanSd(it->second.revisits_98) : std::string("–"));
+      cells.push_back(has && it->second.revisits_98.n ? meanSd(it->second.revisits_98)
+                                                      : std::string("–"));
     }
     table.rows.push_back(std::move(cells));
   }
@@ -872,8 +874,8 @@ std::string table1Csv(const Report& report) {
         csv << "0,,";
       }
       csv << "," << s.l98_oracle_ratio.n << "," << mean(s.l98_oracle_ratio) << ","
-          << csvNumber(s.l98_oracle_ratio.sd) << "," << s.revisits_98.n << "," << mean(s.revisits_98)
-          << "," << csvNumber(s.revisits_98.sd) << "\n";
+          << csvNumber(s.l98_oracle_ratio.sd) << "," << s.revisits_98.n << ","
+          << mean(s.revisits_98) << "," << csvNumber(s.revisits_98.sd) << "\n";
     }
   }
   return csv.str();

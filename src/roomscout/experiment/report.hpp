@@ -53,7 +53,7 @@ struct EpisodeSummary {
   std::optional<double> t98_s;
   std::optional<double> l98_m;
   std::optional<double> revisits;
-  std::optional<double> revisits_98;  ///< revisits up to T98 (none in older records)
+  std::optional<double> revisits_98;      ///< revisits up to T98 (none in older records)
   std::map<std::string, MapSample> maps;  ///< by map type (record's map_stats)
   std::string where;                      ///< "file:line" of the record
   /// What io::loadWorld takes to load the world again: a built-in name, or the world file as
@@ -131,7 +131,7 @@ struct MethodStats {
   std::size_t successes = 0;  ///< EpisodeSummary::succeeded(): final rate >= 98 %, not diverged
   Stat t98_s;                 ///< over the episodes that reached 98 %
   Stat l98_m;
-  Stat revisits;  ///< over the episodes that recorded it
+  Stat revisits;     ///< over the episodes that recorded it
   Stat revisits_98;  ///< revisits up to T98, over the episodes that reached 98 % and recorded it
   /// L98 / oracle tour length of the episode's world, over the episodes that reached 98 %
   /// and have an oracle (for group rows: every plan x seed episode pooled).

@@ -425,11 +425,13 @@ std::optional<ReportFigure> revisitsFigure(const Report& report, bool to_t98) {
   ReportFigure f;
   f.stem = to_t98 ? "revisits_98" : "revisits";
   f.kind = "revisits";
-  f.caption = to_t98 ? "Room revisits up to T98 per method and world: the revisits of the exploration itself, "
-                       "whatever a method does once the map is 98 % complete (mean over the episodes that "
-                       "reached 98 %; a group pools every world × seed episode)."
-                     : "Room revisits per method and world: entries into a ground-truth room entered "
-                       "before, mean over the episodes (a group pools every world × seed episode).";
+  f.caption =
+      to_t98
+          ? "Room revisits up to T98 per method and world: the revisits of the exploration itself, "
+            "whatever a method does once the map is 98 % complete (mean over the episodes that "
+            "reached 98 %; a group pools every world × seed episode)."
+          : "Room revisits per method and world: entries into a ground-truth room entered "
+            "before, mean over the episodes (a group pools every world × seed episode).";
   f.figure = plots::renderBarChart(chart);
   return f;
 }

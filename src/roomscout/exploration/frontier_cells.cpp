@@ -22,8 +22,12 @@ class FrontierCellTest {
  public:
   FrontierCellTest(const OccupancyGrid& grid, const Costmap& costmap, int obstacle_l1_cells,
                    const std::vector<std::uint8_t>* exhausted)
-      : grid_(grid), costmap_(costmap), exhausted_(exhausted), w_(grid.geometry().width()),
-        h_(grid.geometry().height()), r_(obstacle_l1_cells - 1) {}
+      : grid_(grid),
+        costmap_(costmap),
+        exhausted_(exhausted),
+        w_(grid.geometry().width()),
+        h_(grid.geometry().height()),
+        r_(obstacle_l1_cells - 1) {}
 
   bool operator()(int x, int y) const {
     if (x < 2 || y < 2 || x >= w_ - 2 || y >= h_ - 2) return false;
@@ -68,7 +72,8 @@ void requireMatchingCostmap(const OccupancyGrid& grid, const Costmap& costmap) {
 
 /// The known-free, non-lethal cell the robot's free region starts from (the robot's own, else the
 /// nearest within 1 m), if any.
-std::optional<Cell> regionStart(const OccupancyGrid& grid, const Costmap& costmap, const Vec2& from_m) {
+std::optional<Cell> regionStart(const OccupancyGrid& grid, const Costmap& costmap,
+                                const Vec2& from_m) {
   const GridGeometry& g = grid.geometry();
   auto open = [&](std::size_t i) { return grid.isFree(i) && !costmap.isLethal(i); };
   const Cell c = g.cellOf(from_m);
@@ -93,11 +98,13 @@ std::optional<Cell> regionStart(const OccupancyGrid& grid, const Costmap& costma
 /// image of the grid's size (OpenCV's scanline flood fill on the image of such cells).
 cv::Mat freeRegionMask(const OccupancyGrid& grid, const Costmap& costmap, Cell start) {
   const GridGeometry& g = grid.geometry();
-  const cv::Mat lethal(g.height(), g.width(), CV_8U, const_cast<std::uint8_t*>(costmap.lethalMask().data()));
-  const cv::Mat open = (maps::stateView(grid) == static_cast<std::uint8_t>(CellState::kFree)) & (lethal == 0);
+  const cv::Mat lethal(g.height(), g.width(), CV_8U,
+                       const_cast<std::uint8_t*>(costmap.lethalMask().data()));
+  const cv::Mat open =
+      (maps::stateView(grid) == static_cast<std::uint8_t>(CellState::kFree)) & (lethal == 0);
   cv::Mat mask = cv::Mat::zeros(g.height() + 2, g.width() + 2, CV_8U);
-  cv::floodFill(open, mask, cv::Point(start.x, start.y), cv::Scalar(), nullptr, cv::Scalar(), cv::Scalar(),
-                4 | cv::FLOODFILL_MASK_ONLY | (1 << 8));
+  cv::floodFill(open, mask, cv::Point(start.x, start.y), cv::Scalar(), nullptr, cv::Scalar(),
+                cv::Scalar(), 4 | cv::FLOODFILL_MASK_ONLY | (1 << 8));
   return mask(cv::Rect(1, 1, g.width(), g.height()));
 }
 
@@ -110,7 +117,9 @@ void floodOpenRegion(const OccupancyGrid& grid, const Costmap& costmap, Cell sta
                      std::vector<std::uint8_t>& region, Visit&& visit) {
   const GridGeometry& g = grid.geometry();
   const int w = g.width(), h = g.height();
-  auto open = [&](std::size_t i) { return region[i] == 0 && grid.isFree(i) && !costmap.isLethal(i); };
+  auto open = [&](std::size_t i) {
+    return region[i] == 0 && grid.isFree(i) && !costmap.isLethal(i);
+  };
   std::vector<Cell> seeds{start};
   while (!seeds.empty()) {
     const Cell s = seeds.back();
@@ -211,7 +220,8 @@ std::size_t countReachableFrontierCells(const OccupancyGrid& grid, const Costmap
   return found.size();
 }
 
-void knownCellsBox(const OccupancyGrid& grid, const Vec2& robot, int padding_cells, Vec2& min_m, Vec2& max_m) {
+void knownCellsBox(const OccupancyGrid& grid, const Vec2& robot, int padding_cells, Vec2& min_m,
+                   Vec2& max_m) {
   const GridGeometry& g = grid.geometry();
   const cv::Rect known =
       g.cellCount() == 0 ? cv::Rect() : maps::knownBounds(maps::stateView(grid), padding_cells);
@@ -237,8 +247,8 @@ void markDisc(std::vector<std::uint8_t>& mask, const GridGeometry& geometry, con
   }
 }
 
-std::optional<Vec2> nearestGoalCell(const OccupancyGrid& grid, const Costmap& costmap, const Vec2& p_m,
-                                    double max_radius_m, bool free_only) {
+std::optional<Vec2> nearestGoalCell(const OccupancyGrid& grid, const Costmap& costmap,
+                                    const Vec2& p_m, double max_radius_m, bool free_only) {
   requireMatchingCostmap(grid, costmap);
   const GridGeometry& g = grid.geometry();
   const Cell c = g.cellOf(p_m);
@@ -262,8 +272,9 @@ std::optional<Vec2> nearestGoalCell(const OccupancyGrid& grid, const Costmap& co
   return g.centerOf(*best);
 }
 
-void markUnknownPockets(std::vector<std::uint8_t>& exhausted, const OccupancyGrid& grid, const Costmap& costmap,
-                        const std::vector<Cell>& cells, double min_area_m2, double min_opening_m) {
+void markUnknownPockets(std::vector<std::uint8_t>& exhausted, const OccupancyGrid& grid,
+                        const Costmap& costmap, const std::vector<Cell>& cells, double min_area_m2,
+                        double min_opening_m) {
   requireMatchingCostmap(grid, costmap);
   const GridGeometry& g = grid.geometry();
   if (exhausted.size() != g.cellCount()) exhausted.assign(g.cellCount(), 0);
@@ -272,17 +283,22 @@ void markUnknownPockets(std::vector<std::uint8_t>& exhausted, const OccupancyGri
   const std::size_t min_cells = static_cast<std::size_t>(std::ceil(min_area_m2 / (res * res)));
   // 0: reaching the border does not make a component large.
   const std::size_t min_border_cells =
-      min_opening_m > 0.0 ? static_cast<std::size_t>(std::max(1.0, std::ceil(min_opening_m / res - 1e-9)))
-                          : std::numeric_limits<std::size_t>::max();
+      min_opening_m > 0.0
+          ? static_cast<std::size_t>(std::max(1.0, std::ceil(min_opening_m / res - 1e-9)))
+          : std::numeric_limits<std::size_t>::max();
   // The bounding box of the known cells, one cell wider: the unknown beyond it is taken to be
   // outside the outer walls (with min_opening_m > 0: unless the component reaches the box's
   // border through an opening at least that wide, as a corridor leading on would).
   Vec2 box_min, box_max;
   knownCellsBox(grid, g.centerOf(cells.front()), 0, box_min, box_max);
-  const int x0 = std::max(0, static_cast<int>(std::floor((box_min.x() - g.origin_m().x()) / res)) - 1);
-  const int y0 = std::max(0, static_cast<int>(std::floor((box_min.y() - g.origin_m().y()) / res)) - 1);
-  const int x1 = std::min(g.width() - 1, static_cast<int>(std::ceil((box_max.x() - g.origin_m().x()) / res)));
-  const int y1 = std::min(g.height() - 1, static_cast<int>(std::ceil((box_max.y() - g.origin_m().y()) / res)));
+  const int x0 =
+      std::max(0, static_cast<int>(std::floor((box_min.x() - g.origin_m().x()) / res)) - 1);
+  const int y0 =
+      std::max(0, static_cast<int>(std::floor((box_min.y() - g.origin_m().y()) / res)) - 1);
+  const int x1 =
+      std::min(g.width() - 1, static_cast<int>(std::ceil((box_max.x() - g.origin_m().x()) / res)));
+  const int y1 =
+      std::min(g.height() - 1, static_cast<int>(std::ceil((box_max.y() - g.origin_m().y()) / res)));
   const int w = g.width();
   auto open = [&](int x, int y) {
     if (x < x0 || y < y0 || x > x1 || y > y1) return false;

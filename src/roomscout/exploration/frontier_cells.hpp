@@ -45,8 +45,8 @@ std::size_t countReachableFrontierCells(const OccupancyGrid& grid, const Costmap
 /// Cartographer pads the map it publishes (its submap painter's kPaddingPixel): the map
 /// SMMR-Explore's rrt node samples over.
 inline constexpr int kCartographerPaddingCells = 5;
-void knownCellsBox(const OccupancyGrid& grid, const Vec2& fallback_m, int padding_cells, Vec2& min_m,
-                   Vec2& max_m);
+void knownCellsBox(const OccupancyGrid& grid, const Vec2& fallback_m, int padding_cells,
+                   Vec2& min_m, Vec2& max_m);
 
 /// Flags (sets to 1) the cells of `mask` (one byte per cell of `geometry`, resized if needed)
 /// whose centres lie within `radius_m` of `p_m`.
@@ -61,8 +61,8 @@ void markDisc(std::vector<std::uint8_t>& mask, const GridGeometry& geometry, con
 /// The centre of the cell nearest to `p_m` (by squared cell distance, ties by row-major order)
 /// that is inside the grid, not lethal and not occupied, within `max_radius_m`; none if there
 /// is none. With `free_only`, only known-free cells count.
-std::optional<Vec2> nearestGoalCell(const OccupancyGrid& grid, const Costmap& costmap, const Vec2& p_m,
-                                    double max_radius_m, bool free_only = false);
+std::optional<Vec2> nearestGoalCell(const OccupancyGrid& grid, const Costmap& costmap,
+                                    const Vec2& p_m, double max_radius_m, bool free_only = false);
 
 /// Flags in `exhausted` (one byte per cell, resized if needed) the frontier cells among
 /// `cells` that open onto a pocket: fewer than `min_area_m2` of unknown, non-lethal cells are
@@ -76,7 +76,8 @@ std::optional<Vec2> nearestGoalCell(const OccupancyGrid& grid, const Costmap& co
 /// (seen only at grazing angles or between table legs), or the outside of the building seen
 /// through such a crack in an outer wall (hence the box). Neither detector sends the robot to
 /// look into them, so without this the end test never passes on large_office.
-void markUnknownPockets(std::vector<std::uint8_t>& exhausted, const OccupancyGrid& grid, const Costmap& costmap,
-                        const std::vector<Cell>& cells, double min_area_m2, double min_opening_m);
+void markUnknownPockets(std::vector<std::uint8_t>& exhausted, const OccupancyGrid& grid,
+                        const Costmap& costmap, const std::vector<Cell>& cells, double min_area_m2,
+                        double min_opening_m);
 
 }  // namespace roomscout

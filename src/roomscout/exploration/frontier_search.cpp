@@ -33,7 +33,8 @@ std::vector<Frontier> searchFrontiers(const OccupancyGrid& grid, const Vec2& fro
   std::vector<Frontier> frontiers;
   const Cell start_cell = g.cellOf(from_m);
   if (!g.contains(start_cell)) return frontiers;
-  const auto start = nearestFreeCell(grid, start_cell, static_cast<int>(std::ceil(1.0 / g.resolution_m())));
+  const auto start =
+      nearestFreeCell(grid, start_cell, static_cast<int>(std::ceil(1.0 / g.resolution_m())));
   if (!start) return frontiers;
 
   const int w = g.width();
@@ -51,7 +52,9 @@ std::vector<Frontier> searchFrontiers(const OccupancyGrid& grid, const Vec2& fro
       out[x] = s == CellState::kFree ? kFree : (s == CellState::kUnknown ? kUnknown : 0);
     }
   }
-  auto cellOf = [pw](std::ptrdiff_t j) { return Cell{static_cast<int>(j % pw) - 1, static_cast<int>(j / pw) - 1}; };
+  auto cellOf = [pw](std::ptrdiff_t j) {
+    return Cell{static_cast<int>(j % pw) - 1, static_cast<int>(j / pw) - 1};
+  };
   auto isNewFrontierCell = [&](std::ptrdiff_t j) {
     if ((flags[j] & (kUnknown | kFrontier)) != kUnknown) return false;
     return ((flags[j - 1] | flags[j + 1] | flags[j - pw] | flags[j + pw]) & kFree) != 0;

@@ -11,10 +11,10 @@ namespace roomscout {
 
 /// One connected frontier.
 struct Frontier {
-  std::vector<Cell> cells;        ///< member cells
-  Vec2 centroid_m = Vec2::Zero(); ///< mean of the member cell centres [m]
-  Vec2 nearest_m = Vec2::Zero();  ///< member nearest the search start ("middle" in explore_lite)
-  double min_distance_m = 0.0;    ///< Euclidean distance from the search start to nearest_m [m]
+  std::vector<Cell> cells;         ///< member cells
+  Vec2 centroid_m = Vec2::Zero();  ///< mean of the member cell centres [m]
+  Vec2 nearest_m = Vec2::Zero();   ///< member nearest the search start ("middle" in explore_lite)
+  double min_distance_m = 0.0;     ///< Euclidean distance from the search start to nearest_m [m]
   std::size_t size() const { return cells.size(); }
 };
 

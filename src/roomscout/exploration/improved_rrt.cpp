@@ -17,22 +17,29 @@ void ImprovedRrtOptions::validate() const {
   if (!positive(iterations_per_s)) throw OptionError("improved_rrt.iterations_per_s must be > 0");
   if (!positive(info_radius_m)) throw OptionError("improved_rrt.info_radius_m must be > 0");
   if (!(hysteresis_radius_m >= 0.0) || !(hysteresis_gain >= 0.0) || !(gain_weight >= 0.0)) {
-    throw OptionError("improved_rrt: hysteresis_radius_m, hysteresis_gain and gain_weight must be >= 0");
+    throw OptionError(
+        "improved_rrt: hysteresis_radius_m, hysteresis_gain and gain_weight must be >= 0");
   }
   if (new_points_trigger < 0 || iterations_trigger < 1 || min_goal_change_cells < 0) {
-    throw OptionError("improved_rrt: new_points_trigger >= 0, iterations_trigger >= 1, min_goal_change_cells >= 0");
+    throw OptionError(
+        "improved_rrt: new_points_trigger >= 0, iterations_trigger >= 1, min_goal_change_cells >= "
+        "0");
   }
-  if (end_check_iterations < 1 || end_checks < 1 || end_min_frontier_cells < 1 || end_obstacle_l1_cells < 1) {
+  if (end_check_iterations < 1 || end_checks < 1 || end_min_frontier_cells < 1 ||
+      end_obstacle_l1_cells < 1) {
     throw OptionError("improved_rrt: end test counts must be >= 1");
   }
   if (!(replan_period_s >= 0.0)) throw OptionError("improved_rrt.replan_period_s must be >= 0");
-  if (!(blacklist_radius_m >= 0.0)) throw OptionError("improved_rrt.blacklist_radius_m must be >= 0");
+  if (!(blacklist_radius_m >= 0.0))
+    throw OptionError("improved_rrt.blacklist_radius_m must be >= 0");
   if (!(observed_radius_m >= 0.0)) throw OptionError("improved_rrt.observed_radius_m must be >= 0");
-  if (max_iterations_per_call < 1) throw OptionError("improved_rrt.max_iterations_per_call must be >= 1");
+  if (max_iterations_per_call < 1)
+    throw OptionError("improved_rrt.max_iterations_per_call must be >= 1");
   if (!(min_unknown_area_m2 >= 0.0) || !(min_opening_m >= 0.0)) {
     throw OptionError("improved_rrt: min_unknown_area_m2 and min_opening_m must be >= 0");
   }
-  if (!positive(pocket_check_period_s)) throw OptionError("improved_rrt.pocket_check_period_s must be > 0");
+  if (!positive(pocket_check_period_s))
+    throw OptionError("improved_rrt.pocket_check_period_s must be > 0");
   if (!(look_after_idle_s >= 0.0 && std::isfinite(look_after_idle_s))) {
     throw OptionError("improved_rrt.look_after_idle_s must be finite and >= 0");
   }
@@ -46,23 +53,37 @@ std::vector<ParameterRef> ImprovedRrtOptions::parameters() {
       {"hysteresis_radius_m", &hysteresis_radius_m, "gain bonus radius around the robot [m]"},
       {"hysteresis_gain", &hysteresis_gain, "gain factor within the hysteresis radius"},
       {"gain_weight", &gain_weight, "score = gain_weight * G - distance"},
-      {"new_points_trigger", &new_points_trigger, "a goal selection runs after more new points than this"},
-      {"iterations_trigger", &iterations_trigger, "a goal selection runs after more iterations than this"},
+      {"new_points_trigger", &new_points_trigger,
+       "a goal selection runs after more new points than this"},
+      {"iterations_trigger", &iterations_trigger,
+       "a goal selection runs after more iterations than this"},
       {"min_goal_change_cells", &min_goal_change_cells, "least L1 move of a new goal [cells]"},
       {"end_check_iterations", &end_check_iterations, "iterations between end tests"},
       {"end_checks", &end_checks, "consecutive failing end tests that end exploration"},
-      {"end_min_frontier_cells", &end_min_frontier_cells, "fewer reachable frontier cells fail the end test"},
-      {"end_obstacle_l1_cells", &end_obstacle_l1_cells, "L1 margin of a reachable frontier cell to obstacles [cells]"},
+      {"end_min_frontier_cells", &end_min_frontier_cells,
+       "fewer reachable frontier cells fail the end test"},
+      {"end_obstacle_l1_cells", &end_obstacle_l1_cells,
+       "L1 margin of a reachable frontier cell to obstacles [cells]"},
       {"replan_period_s", &replan_period_s, "decision period while driving [s]"},
-      {"blacklist_radius_m", &blacklist_radius_m, "points this close to a failed goal are dropped [m]"},
-      {"observed_radius_m", &observed_radius_m, "end test: frontier cells still unknown this close to the robot are ignored [m]"},
-      {"unsigned_count_quirk", &unsigned_count_quirk, "also select whenever points were removed since the last selection (the original's unsigned difference)"},
+      {"blacklist_radius_m", &blacklist_radius_m,
+       "points this close to a failed goal are dropped [m]"},
+      {"observed_radius_m", &observed_radius_m,
+       "end test: frontier cells still unknown this close to the robot are ignored [m]"},
+      {"unsigned_count_quirk", &unsigned_count_quirk,
+       "also select whenever points were removed since the last selection (the original's unsigned "
+       "difference)"},
       {"max_iterations_per_call", &max_iterations_per_call, "cap on iterations run in one call"},
-      {"min_unknown_area_m2", &min_unknown_area_m2, "end test: frontier cells with less unknown, non-lethal area behind them (inside the known box) are ignored [m^2]"},
-      {"min_opening_m", &min_opening_m, "end test: unknown space leaving the known box through an opening this wide is no pocket [m] (0: off)"},
-      {"pocket_check_period_s", &pocket_check_period_s, "period of the end test's pocket search [s]"},
+      {"min_unknown_area_m2", &min_unknown_area_m2,
+       "end test: frontier cells with less unknown, non-lethal area behind them (inside the known "
+       "box) are ignored [m^2]"},
+      {"min_opening_m", &min_opening_m,
+       "end test: unknown space leaving the known box through an opening this wide is no pocket "
+       "[m] (0: off)"},
+      {"pocket_check_period_s", &pocket_check_period_s,
+       "period of the end test's pocket search [s]"},
       {"look_after_idle_s", &look_after_idle_s,
-       "no frontier point for this long: drive to look at the end test's remaining cells [s]; 0 = never"},
+       "no frontier point for this long: drive to look at the end test's remaining cells [s]; 0 = "
+       "never"},
   };
 }
 
@@ -176,7 +197,8 @@ void ImprovedRrt::eraseFrontiers(Pred&& pred) {
 
 bool ImprovedRrt::blacklisted(const Vec2& p) const {
   const double r2 = options_.blacklist_radius_m * options_.blacklist_radius_m;
-  return std::any_of(blacklist_.begin(), blacklist_.end(), [&](const Vec2& b) { return (b - p).squaredNorm() < r2; });
+  return std::any_of(blacklist_.begin(), blacklist_.end(),
+                     [&](const Vec2& b) { return (b - p).squaredNorm() < r2; });
 }
 
 void ImprovedRrt::onGoalReached(const Vec2& goal_m) { onGoalFailed(goal_m); }
@@ -216,21 +238,23 @@ bool ImprovedRrt::stale(const ExplorationInput& input, const Point& f) {
   return !input.grid.isUnknown(i) || input.costmap.isLethal(i);
 }
 
-ImprovedRrt::Step ImprovedRrt::iterate(const ExplorationInput& input, const RrtTree::Sampler& sampler) {
+ImprovedRrt::Step ImprovedRrt::iterate(const ExplorationInput& input,
+                                       const RrtTree::Sampler& sampler) {
   // End test every end_check_iterations iterations; a failing test skips the iteration.
   if (++iterations_since_end_check_ >= options_.end_check_iterations) {
     const Vec2 robot_m = input.robot.position();
     iterations_since_end_check_ = 0;
     const auto count = [&] {
-      return countReachableFrontierCells(input.grid, input.costmap, options_.end_obstacle_l1_cells, &visited_,
-                                         robot_m, static_cast<std::size_t>(options_.end_min_frontier_cells));
+      return countReachableFrontierCells(input.grid, input.costmap, options_.end_obstacle_l1_cells,
+                                         &visited_, robot_m,
+                                         static_cast<std::size_t>(options_.end_min_frontier_cells));
     };
     std::size_t cells = count();
     if (cells >= static_cast<std::size_t>(options_.end_min_frontier_cells) &&
         input.time_s - last_pocket_check_s_ >= options_.pocket_check_period_s - 1e-9) {
       last_pocket_check_s_ = input.time_s;
-      const std::vector<Cell> all =
-          reachableFrontierCells(input.grid, input.costmap, options_.end_obstacle_l1_cells, &visited_, &robot_m);
+      const std::vector<Cell> all = reachableFrontierCells(
+          input.grid, input.costmap, options_.end_obstacle_l1_cells, &visited_, &robot_m);
       markUnknownPockets(visited_, input.grid, input.costmap, all, options_.min_unknown_area_m2,
                          options_.min_opening_m);
       cells = count();
@@ -315,7 +339,8 @@ void ImprovedRrt::select(const ExplorationInput& input) {
     }
   }
   if (best == nullptr) return;
-  const double l1 = std::abs(best->p.x() - previous_goal_.p.x()) + std::abs(best->p.y() - previous_goal_.p.y());
+  const double l1 =
+      std::abs(best->p.x() - previous_goal_.p.x()) + std::abs(best->p.y() - previous_goal_.p.y());
   if (has_previous_ && l1 < options_.min_goal_change_cells * res) return;
   previous_goal_ = *best;
   previous_index_ = best - frontiers_.data();
@@ -325,7 +350,8 @@ void ImprovedRrt::select(const ExplorationInput& input) {
 
 void ImprovedRrt::followGeometry(const ExplorationInput& input, const GridGeometry& previous) {
   const GridGeometry& g = input.grid.geometry();
-  if (tree_ && tree_->rebound(g.origin_m(), farCorner(g), [&g](const Vec2& p) { return g.contains(p); }) == 0) {
+  if (tree_ && tree_->rebound(g.origin_m(), farCorner(g),
+                              [&g](const Vec2& p) { return g.contains(p); }) == 0) {
     tree_->reset(input.robot.position());
   }
   // Cells and indices are the old grid's: recomputed from the points; gains too.
@@ -340,11 +366,13 @@ void ImprovedRrt::followGeometry(const ExplorationInput& input, const GridGeomet
 
 Decision ImprovedRrt::decide(const ExplorationInput& input) {
   ++call_;
-  if (const auto previous = geometry_.update(input.grid.geometry())) followGeometry(input, *previous);
+  if (const auto previous = geometry_.update(input.grid.geometry()))
+    followGeometry(input, *previous);
   const Vec2 robot = input.robot.position();
   if (!tree_) {
     const GridGeometry& g = input.grid.geometry();
-    const Vec2 max_m = g.origin_m() + Vec2(g.width() * g.resolution_m(), g.height() * g.resolution_m());
+    const Vec2 max_m =
+        g.origin_m() + Vec2(g.width() * g.resolution_m(), g.height() * g.resolution_m());
     tree_ = std::make_unique<RrtTree>(options_.eta_m, g.origin_m(), max_m, 0.5);
     tree_->reset(robot);
     done_until_s_ = input.time_s;
@@ -358,7 +386,8 @@ Decision ImprovedRrt::decide(const ExplorationInput& input) {
     done_until_s_ += static_cast<double>(n) / options_.iterations_per_s;
   }
   markDisc(visited_, input.grid.geometry(), robot, options_.observed_radius_m);
-  if (look_ended_) markDisc(visited_, input.grid.geometry(), look_cell_m_, options_.observed_radius_m);
+  if (look_ended_)
+    markDisc(visited_, input.grid.geometry(), look_cell_m_, options_.observed_radius_m);
   look_ended_ = false;
   if (n > 0) {
     Vec2 box_min, box_max;
@@ -371,12 +400,14 @@ Decision ImprovedRrt::decide(const ExplorationInput& input) {
   }
 
   const GridGeometry& g = input.grid.geometry();
-  if (goal_active_ && !input.costmap.isLethal(g.cellOf(previous_goal_.p))) return Decision::goal(previous_goal_.p);
+  if (goal_active_ && !input.costmap.isLethal(g.cellOf(previous_goal_.p)))
+    return Decision::goal(previous_goal_.p);
   // A goal that became lethal is given up like a failed one.
   if (goal_active_) onGoalFailed(previous_goal_.p);
   if (const auto look = lookGoal(input)) return Decision::goal(*look);
   // No goal to drive to: wait where we are until the next selection.
-  if (const auto wait = nearestGoalCell(input.grid, input.costmap, robot, 3.0)) return Decision::goal(*wait);
+  if (const auto wait = nearestGoalCell(input.grid, input.costmap, robot, 3.0))
+    return Decision::goal(*wait);
   return Decision::done();
 }
 
@@ -389,17 +420,20 @@ std::optional<Vec2> ImprovedRrt::lookGoal(const ExplorationInput& input) {
   if (idle_since_s_ < 0.0) idle_since_s_ = input.time_s;
   if (input.time_s - idle_since_s_ < options_.look_after_idle_s - 1e-9) return std::nullopt;
   const GridGeometry& g = input.grid.geometry();
-  if (looking_ && g.contains(look_cell_m_) && visited_[g.index(g.cellOf(look_cell_m_))] == 0) return look_goal_m_;
+  if (looking_ && g.contains(look_cell_m_) && visited_[g.index(g.cellOf(look_cell_m_))] == 0)
+    return look_goal_m_;
   looking_ = false;
   const Vec2 robot = input.robot.position();
-  const std::vector<Cell> cells =
-      reachableFrontierCells(input.grid, input.costmap, options_.end_obstacle_l1_cells, &visited_, &robot);
+  const std::vector<Cell> cells = reachableFrontierCells(
+      input.grid, input.costmap, options_.end_obstacle_l1_cells, &visited_, &robot);
   if (cells.empty()) return std::nullopt;
-  const Cell nearest = *std::min_element(cells.begin(), cells.end(), [&](const Cell& a, const Cell& b) {
-    return (g.centerOf(a) - robot).squaredNorm() < (g.centerOf(b) - robot).squaredNorm();
-  });
+  const Cell nearest =
+      *std::min_element(cells.begin(), cells.end(), [&](const Cell& a, const Cell& b) {
+        return (g.centerOf(a) - robot).squaredNorm() < (g.centerOf(b) - robot).squaredNorm();
+      });
   look_cell_m_ = g.centerOf(nearest);
-  const std::optional<Vec2> goal = nearestGoalCell(input.grid, input.costmap, look_cell_m_, 2.0 * g.resolution_m());
+  const std::optional<Vec2> goal =
+      nearestGoalCell(input.grid, input.costmap, look_cell_m_, 2.0 * g.resolution_m());
   if (!goal) {
     markDisc(visited_, g, look_cell_m_, options_.observed_radius_m);
     return std::nullopt;

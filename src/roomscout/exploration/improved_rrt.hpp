@@ -71,34 +71,34 @@
 namespace roomscout {
 
 struct ImprovedRrtOptions {
-  double eta_m = 1.0;                ///< tree step (single_rrt_node.launch)
-  double iterations_per_s = 100.0;   ///< RRT iterations per simulated second (rate 100)
-  double info_radius_m = 1.0;        ///< half-side of the information-gain square [m]
-  double hysteresis_radius_m = 3.0;  ///< gain bonus radius around the robot [m]
-  double hysteresis_gain = 2.0;      ///< gain factor within hysteresis_radius_m
-  double gain_weight = 3.0;          ///< score = gain_weight * G - d
-  int new_points_trigger = 25;       ///< a selection runs after more new points than this
-  int iterations_trigger = 500;      ///< ... or after more iterations than this
-  int min_goal_change_cells = 3;     ///< a new goal must move at least this far (L1, cells)
-  int end_check_iterations = 100;    ///< iterations between end tests
-  int end_checks = 5;                ///< consecutive failing end tests that end exploration
-  int end_min_frontier_cells = 2;    ///< fewer reachable frontier cells fail the end test
-  int end_obstacle_l1_cells = 4;     ///< L1 margin of a reachable frontier cell to obstacles
-  double replan_period_s = 0.25;     ///< decide() period while driving [s]
-  double blacklist_radius_m = 0.3;   ///< failed goals drop points this close [m]
-  double observed_radius_m = 0.75;   ///< end test ignores frontier cells that stayed unknown
-                                     ///< with the robot this close (see markDisc) [m]
-  bool unsigned_count_quirk = false; ///< reproduce the original's unsigned point count: a
-                                     ///< selection also whenever points were removed
+  double eta_m = 1.0;                   ///< tree step (single_rrt_node.launch)
+  double iterations_per_s = 100.0;      ///< RRT iterations per simulated second (rate 100)
+  double info_radius_m = 1.0;           ///< half-side of the information-gain square [m]
+  double hysteresis_radius_m = 3.0;     ///< gain bonus radius around the robot [m]
+  double hysteresis_gain = 2.0;         ///< gain factor within hysteresis_radius_m
+  double gain_weight = 3.0;             ///< score = gain_weight * G - d
+  int new_points_trigger = 25;          ///< a selection runs after more new points than this
+  int iterations_trigger = 500;         ///< ... or after more iterations than this
+  int min_goal_change_cells = 3;        ///< a new goal must move at least this far (L1, cells)
+  int end_check_iterations = 100;       ///< iterations between end tests
+  int end_checks = 5;                   ///< consecutive failing end tests that end exploration
+  int end_min_frontier_cells = 2;       ///< fewer reachable frontier cells fail the end test
+  int end_obstacle_l1_cells = 4;        ///< L1 margin of a reachable frontier cell to obstacles
+  double replan_period_s = 0.25;        ///< decide() period while driving [s]
+  double blacklist_radius_m = 0.3;      ///< failed goals drop points this close [m]
+  double observed_radius_m = 0.75;      ///< end test ignores frontier cells that stayed unknown
+                                        ///< with the robot this close (see markDisc) [m]
+  bool unsigned_count_quirk = false;    ///< reproduce the original's unsigned point count: a
+                                        ///< selection also whenever points were removed
   int max_iterations_per_call = 20000;  ///< cap on owed iterations run in one call
-  double min_unknown_area_m2 = 4.0;  ///< end test ignores frontier cells with less unknown,
+  double min_unknown_area_m2 = 4.0;     ///< end test ignores frontier cells with less unknown,
                                      ///< non-lethal area behind them (see markUnknownPockets) [m^2]
-  double min_opening_m = 0.4;        ///< ... and fewer than this on the known box's border
-                                     ///< [m]; 0: the border does not matter (unsafe, see rrt)
+  double min_opening_m = 0.4;           ///< ... and fewer than this on the known box's border
+                                        ///< [m]; 0: the border does not matter (unsafe, see rrt)
   double pocket_check_period_s = 10.0;  ///< period of that pocket search (a full-map scan) [s]
-  double look_after_idle_s = 30.0;   ///< with no frontier point for this long while the end test
-                                     ///< still counts reachable frontier cells, drive to look at
-                                     ///< the nearest of them [s]; 0 = never (the original idles)
+  double look_after_idle_s = 30.0;      ///< with no frontier point for this long while the end test
+                                        ///< still counts reachable frontier cells, drive to look at
+                                        ///< the nearest of them [s]; 0 = never (the original idles)
 
   void validate() const;
   std::vector<ParameterRef> parameters();
@@ -131,11 +131,11 @@ class ImprovedRrt final : public ExplorationStrategy {
  private:
   struct Point {
     Vec2 p = Vec2::Zero();
-    long copies = 1;        ///< times the original's list holds this point: the previous goal
-                            ///< is appended again every iteration while it stays unknown
-    double gain_m2 = 0.0;   ///< G, cached while no cell of its square changes
+    long copies = 1;          ///< times the original's list holds this point: the previous goal
+                              ///< is appended again every iteration while it stays unknown
+    double gain_m2 = 0.0;     ///< G, cached while no cell of its square changes
     bool gain_valid = false;  ///< gain_m2 holds G for the grid of the table's last build
-    Cell cell{};            ///< cell of p; index: its row-major index, -1 outside the grid
+    Cell cell{};              ///< cell of p; index: its row-major index, -1 outside the grid
     long index = -1;
     long neighbours[4] = {-1, -1, -1, -1};  ///< cells of p + (res,0), (0,res), (-res,0), (0,-res)
   };
@@ -165,7 +165,7 @@ class ImprovedRrt final : public ExplorationStrategy {
   long iterations_since_end_check_ = 0;
   int failed_end_checks_ = 0;
   double last_pocket_check_s_ = -1e300;
-  long selected_count_ = 0;            ///< points held right after the last selection
+  long selected_count_ = 0;  ///< points held right after the last selection
   std::vector<Point> frontiers_;
   long held_ = 0;                      ///< sum of frontiers_[i].copies
   long previous_index_ = -1;           ///< entry of previous_goal_.p in frontiers_, if any
@@ -174,13 +174,13 @@ class ImprovedRrt final : public ExplorationStrategy {
   std::unique_ptr<GainTable> gain_table_;  ///< built at most once per call, at its first selection
   std::uint64_t table_call_ = 0;
   bool has_previous_ = false;
-  Point previous_goal_;                ///< the goal last selected, with its cells
-  bool goal_active_ = false;           ///< previous_goal_.p is being driven to
-  double idle_since_s_ = -1.0;         ///< since when no frontier point is held (-1: points)
-  bool looking_ = false;               ///< look_goal_m_ is being driven to
-  bool look_ended_ = false;            ///< the look goal was reached or failed since the last call
-  Vec2 look_cell_m_ = Vec2::Zero();    ///< the frontier cell looked at
-  Vec2 look_goal_m_ = Vec2::Zero();    ///< the free cell next to it
+  Point previous_goal_;              ///< the goal last selected, with its cells
+  bool goal_active_ = false;         ///< previous_goal_.p is being driven to
+  double idle_since_s_ = -1.0;       ///< since when no frontier point is held (-1: points)
+  bool looking_ = false;             ///< look_goal_m_ is being driven to
+  bool look_ended_ = false;          ///< the look goal was reached or failed since the last call
+  Vec2 look_cell_m_ = Vec2::Zero();  ///< the frontier cell looked at
+  Vec2 look_goal_m_ = Vec2::Zero();  ///< the free cell next to it
 };
 
 }  // namespace roomscout

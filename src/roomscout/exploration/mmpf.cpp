@@ -11,11 +11,14 @@
 namespace roomscout {
 
 void MmpfOptions::validate() const {
-  if (!(std::isfinite(cycle_period_s) && cycle_period_s > 0.0)) throw OptionError("mmpf.cycle_period_s must be > 0");
-  if (obstacle_l1_cells < 1 || cluster_l1_cells < 1) throw OptionError("mmpf: obstacle_l1_cells and cluster_l1_cells must be >= 1");
+  if (!(std::isfinite(cycle_period_s) && cycle_period_s > 0.0))
+    throw OptionError("mmpf.cycle_period_s must be > 0");
+  if (obstacle_l1_cells < 1 || cluster_l1_cells < 1)
+    throw OptionError("mmpf: obstacle_l1_cells and cluster_l1_cells must be >= 1");
   if (max_descent_steps < 1) throw OptionError("mmpf.max_descent_steps must be >= 1");
   if (!(river_step >= 0.0)) throw OptionError("mmpf.river_step must be >= 0");
-  if (coarse_factor < 1 || coarse_factor > 8) throw OptionError("mmpf.coarse_factor must be in [1, 8]");
+  if (coarse_factor < 1 || coarse_factor > 8)
+    throw OptionError("mmpf.coarse_factor must be in [1, 8]");
   if (!(keep_goal_radius_m >= 0.0)) throw OptionError("mmpf.keep_goal_radius_m must be >= 0");
   if (end_cycles < 1) throw OptionError("mmpf.end_cycles must be >= 1");
 }
@@ -23,12 +26,14 @@ void MmpfOptions::validate() const {
 std::vector<ParameterRef> MmpfOptions::parameters() {
   return {
       {"cycle_period_s", &cycle_period_s, "seconds between potential-field cycles"},
-      {"obstacle_l1_cells", &obstacle_l1_cells, "frontier cells nearer (L1) to an obstacle are dropped [cells]"},
+      {"obstacle_l1_cells", &obstacle_l1_cells,
+       "frontier cells nearer (L1) to an obstacle are dropped [cells]"},
       {"cluster_l1_cells", &cluster_l1_cells, "cluster join distance (L1, exclusive) [cells]"},
       {"max_descent_steps", &max_descent_steps, "gradient descent iterations"},
       {"river_step", &river_step, "river potential per earlier visit of a cell, times the gain"},
       {"coarse_factor", &coarse_factor, "map cells per potential-field cell"},
-      {"keep_goal_radius_m", &keep_goal_radius_m, "a goal with a frontier cell this close is kept [m]; 0 = replan every cycle"},
+      {"keep_goal_radius_m", &keep_goal_radius_m,
+       "a goal with a frontier cell this close is kept [m]; 0 = replan every cycle"},
       {"end_cycles", &end_cycles, "cycles without frontier cells that end exploration"},
   };
 }
@@ -83,13 +88,14 @@ std::vector<Cluster> clusterCells(std::vector<Cell> cells, int join) {
 Decision Mmpf::decide(const ExplorationInput& input) {
   const bool due = !started_ || input.time_s - last_cycle_s_ >= options_.cycle_period_s - 1e-9;
   const GridGeometry& g = input.grid.geometry();
-  if (!due && has_goal_ && !input.costmap.isLethal(g.cellOf(goal_m_))) return Decision::goal(goal_m_);
+  if (!due && has_goal_ && !input.costmap.isLethal(g.cellOf(goal_m_)))
+    return Decision::goal(goal_m_);
   started_ = true;
   last_cycle_s_ = input.time_s;
 
   const Vec2 robot_m = input.robot.position();
-  std::vector<Cell> targets =
-      reachableFrontierCells(input.grid, input.costmap, options_.obstacle_l1_cells, nullptr, &robot_m);
+  std::vector<Cell> targets = reachableFrontierCells(input.grid, input.costmap,
+                                                     options_.obstacle_l1_cells, nullptr, &robot_m);
   std::erase_if(targets, [&](const Cell& c) {
     const Vec2 p = g.centerOf(c);
     return std::any_of(blacklist_.begin(), blacklist_.end(),
@@ -172,7 +178,8 @@ Decision Mmpf::decide(const ExplorationInput& input) {
   double current = 1e9;
   double river_gain = 1.0;
   for (int it = 1; it < options_.max_descent_steps; ++it) {
-    const Cell around[4] = {{cur.x, cur.y + 1}, {cur.x - 1, cur.y}, {cur.x, cur.y - 1}, {cur.x + 1, cur.y}};
+    const Cell around[4] = {
+        {cur.x, cur.y + 1}, {cur.x - 1, cur.y}, {cur.x, cur.y - 1}, {cur.x + 1, cur.y}};
     int best_k = -1;
     double best = std::numeric_limits<double>::infinity();
     for (int k = 0; k < 4; ++k) {
@@ -198,8 +205,10 @@ Decision Mmpf::decide(const ExplorationInput& input) {
     if (near_centre_[path.back()]) break;
   }
 
-  const Vec2 end_m = g.origin_m() + Vec2((cur.x + 0.5) * f * g.resolution_m(), (cur.y + 0.5) * f * g.resolution_m());
-  std::optional<Vec2> goal = nearestGoalCell(input.grid, input.costmap, end_m, 1.0, /*free_only=*/true);
+  const Vec2 end_m = g.origin_m() + Vec2((cur.x + 0.5) * f * g.resolution_m(),
+                                         (cur.y + 0.5) * f * g.resolution_m());
+  std::optional<Vec2> goal =
+      nearestGoalCell(input.grid, input.costmap, end_m, 1.0, /*free_only=*/true);
   if (!goal) goal = nearestGoalCell(input.grid, input.costmap, end_m, 3.0);
   if (!goal) return Decision::done();
   has_goal_ = true;

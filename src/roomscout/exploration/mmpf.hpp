@@ -18,7 +18,8 @@
 // - distances, potential and descent use cells of `coarse_factor` map cells (default 2:
 //   0.1 m) so a cycle costs milliseconds on large_office instead of a tenth of a second
 //   (the original ran in its own process at 0.05 m); a coarse cell is free when one of its map
-//   cells is free and none is occupied; the step count and the "next to a centre" test are in coarse cells;
+//   cells is free and none is occupied; the step count and the "next to a centre" test are in
+//   coarse cells;
 // - at a local minimum (no lower neighbour) the original increments the river gain but stays
 //   put, so the descent ends there and the robot parks on it for good; ours increments the gain
 //   and flows on to the lowest neighbour (river term included), as the paper describes the
@@ -44,14 +45,14 @@
 namespace roomscout {
 
 struct MmpfOptions {
-  double cycle_period_s = 1.0;     ///< one cycle per simulated second (rate 1)
-  int obstacle_l1_cells = 6;       ///< frontier cells nearer (L1) to an obstacle are dropped
-  int cluster_l1_cells = 3;        ///< a cell within L1 < this of a member joins the cluster
-  int max_descent_steps = 3000;    ///< gradient descent iterations
-  double river_step = 5.0;         ///< river potential per earlier visit, times the gain
-  int coarse_factor = 2;           ///< map cells per potential-field cell (see deviations)
-  double keep_goal_radius_m = 0.5; ///< a goal with a frontier cell this close is kept [m]
-  int end_cycles = 5;              ///< cycles without any frontier cell that end exploration
+  double cycle_period_s = 1.0;      ///< one cycle per simulated second (rate 1)
+  int obstacle_l1_cells = 6;        ///< frontier cells nearer (L1) to an obstacle are dropped
+  int cluster_l1_cells = 3;         ///< a cell within L1 < this of a member joins the cluster
+  int max_descent_steps = 3000;     ///< gradient descent iterations
+  double river_step = 5.0;          ///< river potential per earlier visit, times the gain
+  int coarse_factor = 2;            ///< map cells per potential-field cell (see deviations)
+  double keep_goal_radius_m = 0.5;  ///< a goal with a frontier cell this close is kept [m]
+  int end_cycles = 5;               ///< cycles without any frontier cell that end exploration
 
   void validate() const;
   std::vector<ParameterRef> parameters();

@@ -14,11 +14,16 @@ void NearestFrontierOptions::validate() const {
   if (!(potential_scale >= 0.0) || !(gain_scale >= 0.0)) {
     throw OptionError("nearest_frontier: potential_scale and gain_scale must be >= 0");
   }
-  if (!(min_frontier_size_m >= 0.0)) throw OptionError("nearest_frontier.min_frontier_size_m must be >= 0");
-  if (!(planner_period_s >= 0.0)) throw OptionError("nearest_frontier.planner_period_s must be >= 0");
-  if (!(progress_timeout_s > 0.0)) throw OptionError("nearest_frontier.progress_timeout_s must be > 0");
-  if (!(max_centroid_offset_m > 0.0)) throw OptionError("nearest_frontier.max_centroid_offset_m must be > 0");
-  if (!(blacklist_radius_m >= 0.0)) throw OptionError("nearest_frontier.blacklist_radius_m must be >= 0");
+  if (!(min_frontier_size_m >= 0.0))
+    throw OptionError("nearest_frontier.min_frontier_size_m must be >= 0");
+  if (!(planner_period_s >= 0.0))
+    throw OptionError("nearest_frontier.planner_period_s must be >= 0");
+  if (!(progress_timeout_s > 0.0))
+    throw OptionError("nearest_frontier.progress_timeout_s must be > 0");
+  if (!(max_centroid_offset_m > 0.0))
+    throw OptionError("nearest_frontier.max_centroid_offset_m must be > 0");
+  if (!(blacklist_radius_m >= 0.0))
+    throw OptionError("nearest_frontier.blacklist_radius_m must be >= 0");
 }
 
 std::vector<ParameterRef> NearestFrontierOptions::parameters() {
@@ -27,10 +32,12 @@ std::vector<ParameterRef> NearestFrontierOptions::parameters() {
       {"gain_scale", &gain_scale, "weight of a frontier's size"},
       {"min_frontier_size_m", &min_frontier_size_m, "smallest frontier considered [m]"},
       {"planner_period_s", &planner_period_s, "seconds between re-decisions while driving"},
-      {"progress_timeout_s", &progress_timeout_s, "blacklist a goal after no progress for this long [s]"},
+      {"progress_timeout_s", &progress_timeout_s,
+       "blacklist a goal after no progress for this long [s]"},
       {"blacklist_radius_m", &blacklist_radius_m, "half-size of the box around a failed goal [m]"},
       {"max_centroid_offset_m", &max_centroid_offset_m,
-       "a centroid farther than this from its frontier is replaced by the cell nearest the robot [m]"},
+       "a centroid farther than this from its frontier is replaced by the cell nearest the robot "
+       "[m]"},
   };
 }
 
@@ -55,7 +62,8 @@ std::optional<Vec2> traversableTarget(const Frontier& f, const Costmap& costmap,
                                       double max_centroid_offset_m) {
   const GridGeometry& g = costmap.geometry();
   double offset2 = std::numeric_limits<double>::infinity();
-  for (const Cell& m : f.cells) offset2 = std::min(offset2, (g.centerOf(m) - f.centroid_m).squaredNorm());
+  for (const Cell& m : f.cells)
+    offset2 = std::min(offset2, (g.centerOf(m) - f.centroid_m).squaredNorm());
   const bool ring = offset2 > max_centroid_offset_m * max_centroid_offset_m;
   const Cell c = g.cellOf(f.centroid_m);
   if (!ring && g.contains(c) && !costmap.isLethal(g.index(c))) return f.centroid_m;
@@ -78,7 +86,8 @@ std::optional<Vec2> traversableTarget(const Frontier& f, const Costmap& costmap,
 
 Decision NearestFrontier::decide(const ExplorationInput& input) {
   const double res = input.grid.geometry().resolution_m();
-  const auto min_cells = static_cast<std::size_t>(std::ceil(options_.min_frontier_size_m / res - 1e-9));
+  const auto min_cells =
+      static_cast<std::size_t>(std::ceil(options_.min_frontier_size_m / res - 1e-9));
   const std::vector<Frontier> frontiers =
       searchFrontiers(input.grid, input.robot.position(), std::max<std::size_t>(1, min_cells));
 
@@ -89,7 +98,8 @@ Decision NearestFrontier::decide(const ExplorationInput& input) {
     const double cost = options_.potential_scale * f.min_distance_m * res -
                         options_.gain_scale * static_cast<double>(f.size()) * res;
     if (cost >= best_cost) continue;
-    const std::optional<Vec2> target = traversableTarget(f, input.costmap, input.robot.position(), options_.max_centroid_offset_m);
+    const std::optional<Vec2> target =
+        traversableTarget(f, input.costmap, input.robot.position(), options_.max_centroid_offset_m);
     if (!target || onBlacklist(*target)) continue;
     best = &f;
     best_cost = cost;

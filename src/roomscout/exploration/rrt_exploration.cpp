@@ -12,7 +12,8 @@ namespace roomscout {
 
 void RrtExplorationOptions::validate() const {
   auto positive = [](double v) { return std::isfinite(v) && v > 0.0; };
-  if (!positive(global_eta_m) || !positive(local_eta_m)) throw OptionError("rrt: global_eta_m and local_eta_m must be > 0");
+  if (!positive(global_eta_m) || !positive(local_eta_m))
+    throw OptionError("rrt: global_eta_m and local_eta_m must be > 0");
   if (!positive(samples_per_s)) throw OptionError("rrt.samples_per_s must be > 0");
   if (!positive(bandwidth_m)) throw OptionError("rrt.bandwidth_m must be > 0");
   if (!positive(info_radius_m)) throw OptionError("rrt.info_radius_m must be > 0");
@@ -23,7 +24,8 @@ void RrtExplorationOptions::validate() const {
   if (!(assign_period_s >= 0.0)) throw OptionError("rrt.assign_period_s must be >= 0");
   if (!(blacklist_radius_m >= 0.0)) throw OptionError("rrt.blacklist_radius_m must be >= 0");
   if (!positive(end_check_period_s)) throw OptionError("rrt.end_check_period_s must be > 0");
-  if (end_checks < 1 || end_min_frontier_cells < 1) throw OptionError("rrt: end_checks and end_min_frontier_cells must be >= 1");
+  if (end_checks < 1 || end_min_frontier_cells < 1)
+    throw OptionError("rrt: end_checks and end_min_frontier_cells must be >= 1");
   if (!(observed_radius_m >= 0.0)) throw OptionError("rrt.observed_radius_m must be >= 0");
   if (max_samples_per_call < 1) throw OptionError("rrt.max_samples_per_call must be >= 1");
   if (!positive(idle_end_s)) throw OptionError("rrt.idle_end_s must be > 0");
@@ -40,21 +42,32 @@ std::vector<ParameterRef> RrtExplorationOptions::parameters() {
       {"samples_per_s", &samples_per_s, "samples per simulated second, per tree"},
       {"bandwidth_m", &bandwidth_m, "mean-shift bandwidth of the frontier filter [m]"},
       {"info_radius_m", &info_radius_m, "information gain disc radius [m]"},
-      {"min_info_gain_m2", &min_info_gain_m2, "filter: least unknown area in a disc of info_radius/2 [m^2]"},
+      {"min_info_gain_m2", &min_info_gain_m2,
+       "filter: least unknown area in a disc of info_radius/2 [m^2]"},
       {"info_multiplier", &info_multiplier, "weight of the information gain in the revenue"},
-      {"hysteresis_radius_m", &hysteresis_radius_m, "information gain bonus radius around the robot [m]"},
+      {"hysteresis_radius_m", &hysteresis_radius_m,
+       "information gain bonus radius around the robot [m]"},
       {"hysteresis_gain", &hysteresis_gain, "information gain factor within the hysteresis radius"},
       {"assign_period_s", &assign_period_s, "re-assignment period [s]"},
-      {"blacklist_radius_m", &blacklist_radius_m, "centroids this close to a failed goal are skipped [m]"},
+      {"blacklist_radius_m", &blacklist_radius_m,
+       "centroids this close to a failed goal are skipped [m]"},
       {"end_check_period_s", &end_check_period_s, "period of the end test [s]"},
       {"end_checks", &end_checks, "consecutive failing end tests that end exploration"},
-      {"end_min_frontier_cells", &end_min_frontier_cells, "fewer reachable frontier cells fail the end test"},
-      {"observed_radius_m", &observed_radius_m, "end test: frontier cells still unknown this close to the robot are ignored [m]"},
+      {"end_min_frontier_cells", &end_min_frontier_cells,
+       "fewer reachable frontier cells fail the end test"},
+      {"observed_radius_m", &observed_radius_m,
+       "end test: frontier cells still unknown this close to the robot are ignored [m]"},
       {"max_samples_per_call", &max_samples_per_call, "cap on samples grown in one call, per tree"},
-      {"idle_end_s", &idle_end_s, "exploration ends after this long with no assignable centroid [s]"},
-      {"min_unknown_area_m2", &min_unknown_area_m2, "end test: frontier cells with less unknown, non-lethal area behind them (inside the known box) are ignored [m^2]"},
-      {"min_opening_m", &min_opening_m, "end test: unknown space leaving the known box through an opening this wide is no pocket [m] (0: off)"},
-      {"pocket_check_period_s", &pocket_check_period_s, "period of the end test's pocket search [s]"},
+      {"idle_end_s", &idle_end_s,
+       "exploration ends after this long with no assignable centroid [s]"},
+      {"min_unknown_area_m2", &min_unknown_area_m2,
+       "end test: frontier cells with less unknown, non-lethal area behind them (inside the known "
+       "box) are ignored [m^2]"},
+      {"min_opening_m", &min_opening_m,
+       "end test: unknown space leaving the known box through an opening this wide is no pocket "
+       "[m] (0: off)"},
+      {"pocket_check_period_s", &pocket_check_period_s,
+       "period of the end test's pocket search [s]"},
   };
 }
 
@@ -76,8 +89,10 @@ double unknownAreaInDisc(const OccupancyGrid& grid, const Vec2& p, double radius
     // The row's cells whose centres lie in the disc, give or take one cell at each end, where
     // the exact test decides.
     const double half = std::sqrt(r2 - dy * dy);
-    const int x0 = std::max(0, static_cast<int>(std::floor((p.x() - half - g.origin_m().x()) / res - 0.5)));
-    const int x1 = std::min(g.width() - 1, static_cast<int>(std::ceil((p.x() + half - g.origin_m().x()) / res - 0.5)));
+    const int x0 =
+        std::max(0, static_cast<int>(std::floor((p.x() - half - g.origin_m().x()) / res - 0.5)));
+    const int x1 = std::min(
+        g.width() - 1, static_cast<int>(std::ceil((p.x() + half - g.origin_m().x()) / res - 0.5)));
     const std::size_t row = static_cast<std::size_t>(y) * g.width();
     // Interior cells lie in the disc: a branch-free count of unknown state bytes. The two
     // cells at each end (fewer in a short row) take the exact test.
@@ -125,7 +140,8 @@ std::vector<Vec2> meanShift(const std::vector<Vec2>& points, double bandwidth_m)
     }
     if (support > 0) modes.push_back({x, support, s});
   }
-  std::stable_sort(modes.begin(), modes.end(), [](const Mode& a, const Mode& b) { return a.support > b.support; });
+  std::stable_sort(modes.begin(), modes.end(),
+                   [](const Mode& a, const Mode& b) { return a.support > b.support; });
   std::vector<Vec2> centers;
   for (const Mode& m : modes) {
     const bool duplicate = std::any_of(centers.begin(), centers.end(),
@@ -137,7 +153,6 @@ std::vector<Vec2> meanShift(const std::vector<Vec2>& points, double bandwidth_m)
 
 }  // namespace
 
-
 RrtExploration::RrtExploration(std::uint64_t seed, const RrtExplorationOptions& options)
     : options_(options), rng_(seed) {}
 
@@ -145,7 +160,8 @@ RrtExploration::~RrtExploration() = default;
 
 bool RrtExploration::blacklisted(const Vec2& p) const {
   const double r2 = options_.blacklist_radius_m * options_.blacklist_radius_m;
-  return std::any_of(blacklist_.begin(), blacklist_.end(), [&](const Vec2& b) { return (b - p).squaredNorm() < r2; });
+  return std::any_of(blacklist_.begin(), blacklist_.end(),
+                     [&](const Vec2& b) { return (b - p).squaredNorm() < r2; });
 }
 
 void RrtExploration::onGoalReached(const Vec2& goal_m) {
@@ -179,7 +195,8 @@ void RrtExploration::grow(const ExplorationInput& input) {
   const Vec2 robot = input.robot.position();
   const GridGeometry& g = input.grid.geometry();
   if (!global_) {
-    const Vec2 max_m = g.origin_m() + Vec2(g.width() * g.resolution_m(), g.height() * g.resolution_m());
+    const Vec2 max_m =
+        g.origin_m() + Vec2(g.width() * g.resolution_m(), g.height() * g.resolution_m());
     global_ = std::make_unique<RrtTree>(options_.global_eta_m, g.origin_m(), max_m, 1.0);
     local_ = std::make_unique<RrtTree>(options_.local_eta_m, g.origin_m(), max_m, 0.5);
     sampler_ = uniformBoxSampler(g.origin_m(), max_m);
@@ -218,13 +235,15 @@ void RrtExploration::filter(const ExplorationInput& input) {
   std::erase_if(centers, [&](const Vec2& c) {
     const Cell cell = g.cellOf(c);
     if (!g.contains(cell) || input.costmap.isLethal(g.index(cell))) return true;
-    return unknownAreaInDisc(input.grid, c, 0.5 * options_.info_radius_m) < options_.min_info_gain_m2;
+    return unknownAreaInDisc(input.grid, c, 0.5 * options_.info_radius_m) <
+           options_.min_info_gain_m2;
   });
   centroids_ = std::move(centers);
 }
 
 Decision RrtExploration::decide(const ExplorationInput& input) {
-  if (const auto previous = geometry_.update(input.grid.geometry())) followGeometry(input, *previous);
+  if (const auto previous = geometry_.update(input.grid.geometry()))
+    followGeometry(input, *previous);
   grow(input);
   filter(input);
   markDisc(visited_, input.grid.geometry(), input.robot.position(), options_.observed_radius_m);
@@ -241,7 +260,8 @@ Decision RrtExploration::decide(const ExplorationInput& input) {
     if (cells >= static_cast<std::size_t>(options_.end_min_frontier_cells) &&
         input.time_s - last_pocket_check_s_ >= options_.pocket_check_period_s - 1e-9) {
       last_pocket_check_s_ = input.time_s;
-      const std::vector<Cell> all = reachableFrontierCells(input.grid, input.costmap, 4, &visited_, &robot_m);
+      const std::vector<Cell> all =
+          reachableFrontierCells(input.grid, input.costmap, 4, &visited_, &robot_m);
       markUnknownPockets(visited_, input.grid, input.costmap, all, options_.min_unknown_area_m2,
                          options_.min_opening_m);
       cells = count();
@@ -265,7 +285,8 @@ Decision RrtExploration::decide(const ExplorationInput& input) {
     if (d <= options_.hysteresis_radius_m) ig *= options_.hysteresis_gain;
     // The original's busy robot: centroids near the goal it is driving to get the bonus too,
     // so that it does not flip between goals of similar revenue on the way.
-    if (has_goal_ && (c - goal_m_).norm() < options_.hysteresis_radius_m) ig = area * options_.hysteresis_gain;
+    if (has_goal_ && (c - goal_m_).norm() < options_.hysteresis_radius_m)
+      ig = area * options_.hysteresis_gain;
     const double revenue = options_.info_multiplier * ig - d;
     if (revenue > best_revenue) {
       best_revenue = revenue;
@@ -284,7 +305,8 @@ Decision RrtExploration::decide(const ExplorationInput& input) {
   if (idle_since_s_ < 0.0) idle_since_s_ = input.time_s;
   if (input.time_s - idle_since_s_ >= options_.idle_end_s) return Decision::done();
   // Nothing to assign yet: wait where we are while the trees grow.
-  if (const auto wait = nearestGoalCell(input.grid, input.costmap, robot, 3.0)) return Decision::goal(*wait);
+  if (const auto wait = nearestGoalCell(input.grid, input.costmap, robot, 3.0))
+    return Decision::goal(*wait);
   return Decision::done();
 }
 

@@ -40,12 +40,14 @@ EdgeCheck checkEdge(const OccupancyGrid& grid, const Vec2& from_m, const Vec2& t
 
 RrtTree::RrtTree(double eta_m, const Vec2& min_m, const Vec2& max_m, double bucket_m)
     : eta_m_(eta_m), min_m_(min_m), bucket_m_(bucket_m) {
-  if (!(eta_m > 0.0) || !(bucket_m > 0.0)) throw InvalidArgument("RrtTree: eta_m and bucket_m must be > 0");
+  if (!(eta_m > 0.0) || !(bucket_m > 0.0))
+    throw InvalidArgument("RrtTree: eta_m and bucket_m must be > 0");
   layBuckets(min_m, max_m);
 }
 
 void RrtTree::layBuckets(const Vec2& min_m, const Vec2& max_m) {
-  if (!(max_m.x() >= min_m.x() && max_m.y() >= min_m.y())) throw InvalidArgument("RrtTree: empty box");
+  if (!(max_m.x() >= min_m.x() && max_m.y() >= min_m.y()))
+    throw InvalidArgument("RrtTree: empty box");
   min_m_ = min_m;
   buckets_x_ = std::max(1, static_cast<int>(std::ceil((max_m.x() - min_m.x()) / bucket_m_)));
   buckets_y_ = std::max(1, static_cast<int>(std::ceil((max_m.y() - min_m.y()) / bucket_m_)));
@@ -54,7 +56,8 @@ void RrtTree::layBuckets(const Vec2& min_m, const Vec2& max_m) {
   used_max_x_ = used_max_y_ = -1;
 }
 
-std::size_t RrtTree::rebound(const Vec2& min_m, const Vec2& max_m, const std::function<bool(const Vec2&)>& keep) {
+std::size_t RrtTree::rebound(const Vec2& min_m, const Vec2& max_m,
+                             const std::function<bool(const Vec2&)>& keep) {
   constexpr std::size_t kDropped = std::numeric_limits<std::size_t>::max();
   std::vector<std::size_t> new_index(nodes_.size(), kDropped);
   std::size_t kept = 0;
@@ -82,16 +85,19 @@ std::size_t RrtTree::rebound(const Vec2& min_m, const Vec2& max_m, const std::fu
 }
 
 int RrtTree::bucketX(double x_m) const {
-  return std::clamp(static_cast<int>(std::floor((x_m - min_m_.x()) / bucket_m_)), 0, buckets_x_ - 1);
+  return std::clamp(static_cast<int>(std::floor((x_m - min_m_.x()) / bucket_m_)), 0,
+                    buckets_x_ - 1);
 }
 int RrtTree::bucketY(double y_m) const {
-  return std::clamp(static_cast<int>(std::floor((y_m - min_m_.y()) / bucket_m_)), 0, buckets_y_ - 1);
+  return std::clamp(static_cast<int>(std::floor((y_m - min_m_.y()) / bucket_m_)), 0,
+                    buckets_y_ - 1);
 }
 
 void RrtTree::reset(const Vec2& root_m) {
   // Only the used part of the index holds nodes.
   for (int by = used_min_y_; by <= used_max_y_; ++by) {
-    for (int bx = used_min_x_; bx <= used_max_x_; ++bx) buckets_[static_cast<std::size_t>(by) * buckets_x_ + bx].clear();
+    for (int bx = used_min_x_; bx <= used_max_x_; ++bx)
+      buckets_[static_cast<std::size_t>(by) * buckets_x_ + bx].clear();
   }
   used_min_x_ = used_min_y_ = 0;
   used_max_x_ = used_max_y_ = -1;
@@ -105,7 +111,8 @@ std::size_t RrtTree::add(const Vec2& p_m, std::size_t parent) {
   nodes_.push_back(p_m);
   parents_.push_back(nodes_.size() == 1 ? 0 : parent);
   const int bx = bucketX(p_m.x()), by = bucketY(p_m.y());
-  buckets_[static_cast<std::size_t>(by) * buckets_x_ + bx].push_back(static_cast<std::uint32_t>(index));
+  buckets_[static_cast<std::size_t>(by) * buckets_x_ + bx].push_back(
+      static_cast<std::uint32_t>(index));
   if (used_max_x_ < used_min_x_) {
     used_min_x_ = used_max_x_ = bx;
     used_min_y_ = used_max_y_ = by;
@@ -133,7 +140,8 @@ std::size_t RrtTree::nearest(const Vec2& p_m) const {
       }
     }
   };
-  const int max_ring = std::max({qx - used_min_x_, used_max_x_ - qx, qy - used_min_y_, used_max_y_ - qy, 0});
+  const int max_ring =
+      std::max({qx - used_min_x_, used_max_x_ - qx, qy - used_min_y_, used_max_y_ - qy, 0});
   for (int r = 0; r <= max_ring; ++r) {
     if (r == 0) {
       scan(qx, qy);
@@ -148,9 +156,12 @@ std::size_t RrtTree::nearest(const Vec2& p_m) const {
       }
     }
     // Every node not yet seen lies outside the square of rings 0..r: at least `clear` away.
-    const double left = min_m_.x() + (qx - r) * bucket_m_, right = min_m_.x() + (qx + r + 1) * bucket_m_;
-    const double bottom = min_m_.y() + (qy - r) * bucket_m_, top = min_m_.y() + (qy + r + 1) * bucket_m_;
-    const double clear = std::min({p_m.x() - left, right - p_m.x(), p_m.y() - bottom, top - p_m.y()});
+    const double left = min_m_.x() + (qx - r) * bucket_m_,
+                 right = min_m_.x() + (qx + r + 1) * bucket_m_;
+    const double bottom = min_m_.y() + (qy - r) * bucket_m_,
+                 top = min_m_.y() + (qy + r + 1) * bucket_m_;
+    const double clear =
+        std::min({p_m.x() - left, right - p_m.x(), p_m.y() - bottom, top - p_m.y()});
     if (clear > 0.0 && best_d2 <= clear * clear) break;
   }
   return best;

@@ -36,9 +36,9 @@ EdgeCheck checkEdge(const OccupancyGrid& grid, const Vec2& from_m, const Vec2& t
 /// The outcome of one tree extension.
 struct RrtExtension {
   EdgeStatus status = EdgeStatus::kObstacle;
-  std::size_t nearest = 0;        ///< index of the node the edge starts from
-  Vec2 new_m = Vec2::Zero();      ///< steered point, truncated at the frontier when one was met
-  bool added = false;             ///< true when `new_m` became a node (free edges only)
+  std::size_t nearest = 0;    ///< index of the node the edge starts from
+  Vec2 new_m = Vec2::Zero();  ///< steered point, truncated at the frontier when one was met
+  bool added = false;         ///< true when `new_m` became a node (free edges only)
 };
 
 /// A random tree of points in the map frame with a bucket index for nearest-node queries
@@ -87,7 +87,8 @@ class RrtTree {
   /// order. A kept node whose parent was dropped hangs from its nearest kept ancestor, or is a
   /// root (its own parent) when it has none. Returns the number of nodes kept; with none the
   /// tree is empty and must be reset() before it grows again.
-  std::size_t rebound(const Vec2& min_m, const Vec2& max_m, const std::function<bool(const Vec2&)>& keep);
+  std::size_t rebound(const Vec2& min_m, const Vec2& max_m,
+                      const std::function<bool(const Vec2&)>& keep);
 
  private:
   /// Sizes an empty index for the box [min_m, max_m].

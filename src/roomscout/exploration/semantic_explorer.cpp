@@ -22,30 +22,42 @@ void SemanticExplorerOptions::validate() const {
   }
   if (!finiteAtLeast(room_reward, 0.0)) throw OptionError("semantic.room_reward must be >= 0");
   if (!positive(gain_half_side_m)) throw OptionError("semantic.gain_half_side_m must be > 0");
-  if (!finiteAtLeast(min_unknown_m2, 0.0)) throw OptionError("semantic.min_unknown_m2 must be >= 0");
-  if (!finiteAtLeast(pocket_area_m2, 0.0)) throw OptionError("semantic.pocket_area_m2 must be >= 0");
+  if (!finiteAtLeast(min_unknown_m2, 0.0))
+    throw OptionError("semantic.min_unknown_m2 must be >= 0");
+  if (!finiteAtLeast(pocket_area_m2, 0.0))
+    throw OptionError("semantic.pocket_area_m2 must be >= 0");
   if (!finiteAtLeast(pocket_area_fraction, 0.0)) {
     throw OptionError("semantic.pocket_area_fraction must be >= 0");
   }
-  if (!finiteAtLeast(min_frontier_m, 0.0)) throw OptionError("semantic.min_frontier_m must be >= 0");
+  if (!finiteAtLeast(min_frontier_m, 0.0))
+    throw OptionError("semantic.min_frontier_m must be >= 0");
   if (!positive(eta_m)) throw OptionError("semantic.eta_m must be > 0");
   if (!positive(iterations_per_s)) throw OptionError("semantic.iterations_per_s must be > 0");
-  if (!finiteAtLeast(replan_period_s, 0.0)) throw OptionError("semantic.replan_period_s must be >= 0");
+  if (!finiteAtLeast(replan_period_s, 0.0))
+    throw OptionError("semantic.replan_period_s must be >= 0");
   if (!finiteAtLeast(switch_margin, 0.0)) throw OptionError("semantic.switch_margin must be >= 0");
-  if (!finiteAtLeast(label_search_m, 0.0)) throw OptionError("semantic.label_search_m must be >= 0");
-  if (!finiteAtLeast(blacklist_radius_m, 0.0)) throw OptionError("semantic.blacklist_radius_m must be >= 0");
+  if (!finiteAtLeast(label_search_m, 0.0))
+    throw OptionError("semantic.label_search_m must be >= 0");
+  if (!finiteAtLeast(blacklist_radius_m, 0.0))
+    throw OptionError("semantic.blacklist_radius_m must be >= 0");
   if (!positive(end_check_period_s)) throw OptionError("semantic.end_check_period_s must be > 0");
   if (end_checks < 1 || end_min_frontier_cells < 1) {
     throw OptionError("semantic: end_checks and end_min_frontier_cells must be >= 1");
   }
-  if (!finiteAtLeast(observed_radius_m, 0.0)) throw OptionError("semantic.observed_radius_m must be >= 0");
+  if (!finiteAtLeast(observed_radius_m, 0.0))
+    throw OptionError("semantic.observed_radius_m must be >= 0");
   if (!positive(idle_end_s)) throw OptionError("semantic.idle_end_s must be > 0");
-  if (max_iterations_per_call < 1) throw OptionError("semantic.max_iterations_per_call must be >= 1");
+  if (max_iterations_per_call < 1)
+    throw OptionError("semantic.max_iterations_per_call must be >= 1");
   if (hub_min_neighbours < 0) throw OptionError("semantic.hub_min_neighbours must be >= 0");
-  if (!finiteAtLeast(next_room_cost_factor, 0.0)) throw OptionError("semantic.next_room_cost_factor must be >= 0");
-  if (!finiteAtLeast(hub_sample_radius_m, 0.0)) throw OptionError("semantic.hub_sample_radius_m must be >= 0");
-  if (!finiteAtLeast(heading_weight, 0.0)) throw OptionError("semantic.heading_weight must be >= 0");
-  if (!finiteAtLeast(segment_weight, 0.0)) throw OptionError("semantic.segment_weight must be >= 0");
+  if (!finiteAtLeast(next_room_cost_factor, 0.0))
+    throw OptionError("semantic.next_room_cost_factor must be >= 0");
+  if (!finiteAtLeast(hub_sample_radius_m, 0.0))
+    throw OptionError("semantic.hub_sample_radius_m must be >= 0");
+  if (!finiteAtLeast(heading_weight, 0.0))
+    throw OptionError("semantic.heading_weight must be >= 0");
+  if (!finiteAtLeast(segment_weight, 0.0))
+    throw OptionError("semantic.segment_weight must be >= 0");
   if (!finiteAtLeast(segment_cap_m, 0.0)) throw OptionError("semantic.segment_cap_m must be >= 0");
   if (!finiteAtLeast(mass_weight, 0.0)) throw OptionError("semantic.mass_weight must be >= 0");
   if (!positive(mass_half_side_m)) throw OptionError("semantic.mass_half_side_m must be > 0");
@@ -59,34 +71,51 @@ std::vector<ParameterRef> SemanticExplorerOptions::parameters() {
       {"cost_weight", &cost_weight, "w_c: weight of C, the distance to the point [1/m]"},
       {"room_reward", &room_reward, "A: added to points in the current room, subtracted elsewhere"},
       {"gain_half_side_m", &gain_half_side_m, "half-side of the square G is measured in [m]"},
-      {"min_unknown_m2", &min_unknown_m2, "points with less unknown area in G's square are not goals [m^2]"},
-      {"min_frontier_m", &min_frontier_m, "squares with less frontier (free cells next to unknown x cell size) are explored; 0 = off [m]"},
-      {"pocket_area_m2", &pocket_area_m2, "points opening onto less unknown, non-lethal area count as slivers; 0 = off [m^2]"},
+      {"min_unknown_m2", &min_unknown_m2,
+       "points with less unknown area in G's square are not goals [m^2]"},
+      {"min_frontier_m", &min_frontier_m,
+       "squares with less frontier (free cells next to unknown x cell size) are explored; 0 = off "
+       "[m]"},
+      {"pocket_area_m2", &pocket_area_m2,
+       "points opening onto less unknown, non-lethal area count as slivers; 0 = off [m^2]"},
       {"pocket_area_fraction", &pocket_area_fraction,
-       "once idle, pockets must also be smaller than this fraction of the known free area; 0 = off"},
-      {"geodesic_cost", &geodesic_cost, "C is the path length through the costmap instead of the Euclidean distance"},
+       "once idle, pockets must also be smaller than this fraction of the known free area; 0 = "
+       "off"},
+      {"geodesic_cost", &geodesic_cost,
+       "C is the path length through the costmap instead of the Euclidean distance"},
       {"eta_m", &eta_m, "tree steering step [m]"},
       {"iterations_per_s", &iterations_per_s, "tree iterations per simulated second"},
       {"replan_period_s", &replan_period_s, "re-evaluation period while driving [s]"},
-      {"switch_margin", &switch_margin, "another point must beat the goal's score by this to replace it"},
-      {"label_search_m", &label_search_m, "unlabelled free cells take the room of the nearest labelled cell this far through free cells [m]"},
-      {"blacklist_radius_m", &blacklist_radius_m, "reached or failed goals drop frontier points this close [m]"},
+      {"switch_margin", &switch_margin,
+       "another point must beat the goal's score by this to replace it"},
+      {"label_search_m", &label_search_m,
+       "unlabelled free cells take the room of the nearest labelled cell this far through free "
+       "cells [m]"},
+      {"blacklist_radius_m", &blacklist_radius_m,
+       "reached or failed goals drop frontier points this close [m]"},
       {"end_check_period_s", &end_check_period_s, "period of the end test [s]"},
       {"end_checks", &end_checks, "consecutive failing end tests that end exploration"},
-      {"end_min_frontier_cells", &end_min_frontier_cells, "fewer reachable frontier cells fail the end test"},
-      {"observed_radius_m", &observed_radius_m, "end test: frontier cells still unknown this close to the robot are ignored [m]"},
+      {"end_min_frontier_cells", &end_min_frontier_cells,
+       "fewer reachable frontier cells fail the end test"},
+      {"observed_radius_m", &observed_radius_m,
+       "end test: frontier cells still unknown this close to the robot are ignored [m]"},
       {"idle_end_s", &idle_end_s, "idle this long: the room's slivers, then the end phase [s]"},
-      {"max_iterations_per_call", &max_iterations_per_call, "cap on tree iterations run in one call"},
+      {"max_iterations_per_call", &max_iterations_per_call,
+       "cap on tree iterations run in one call"},
       {"next_room_cost_factor", &next_room_cost_factor,
-       "C weighs this many times w_c when choosing the next room (in a hub, or no point left in the room); 1 = off"},
+       "C weighs this many times w_c when choosing the next room (in a hub, or no point left in "
+       "the room); 1 = off"},
       {"hub_min_neighbours", &hub_min_neighbours,
-       "a room with this many neighbouring rooms is a hub: no +-A there, P_sem near the robot; 0 = off"},
+       "a room with this many neighbouring rooms is a hub: no +-A there, P_sem near the robot; 0 = "
+       "off"},
       {"hub_sample_radius_m", &hub_sample_radius_m,
-       "in a hub, P_sem is drawn from the frontier cells in the square of this half-side around the robot; 0 = none [m]"},
+       "in a hub, P_sem is drawn from the frontier cells in the square of this half-side around "
+       "the robot; 0 = none [m]"},
       {"heading_weight", &heading_weight,
        "S -= heading_weight (1 - cos d) / 2, d the angle between the robot's heading and the "
        "line to the point (not for the current goal); 0 = off"},
-      {"segment_weight", &segment_weight, "S += segment_weight min(L, segment_cap_m), L the frontier segment's length [1/m]; 0 = off"},
+      {"segment_weight", &segment_weight,
+       "S += segment_weight min(L, segment_cap_m), L the frontier segment's length [1/m]; 0 = off"},
       {"segment_cap_m", &segment_cap_m, "cap on the frontier segment's length [m]"},
       {"mass_weight", &mass_weight,
        "choosing the next room: S += mass_weight min(M, mass_cap_m), M the frontier (free cells "
@@ -115,8 +144,9 @@ constexpr int kBlock = 2;
 bool freeBesideUnknown(const OccupancyGrid& grid, int x, int y) {
   const int w = grid.geometry().width(), h = grid.geometry().height();
   const std::size_t i = static_cast<std::size_t>(y) * w + x;
-  return grid.isFree(i) && ((x > 0 && grid.isUnknown(i - 1)) || (x + 1 < w && grid.isUnknown(i + 1)) ||
-                            (y > 0 && grid.isUnknown(i - w)) || (y + 1 < h && grid.isUnknown(i + w)));
+  return grid.isFree(i) &&
+         ((x > 0 && grid.isUnknown(i - 1)) || (x + 1 < w && grid.isUnknown(i + 1)) ||
+          (y > 0 && grid.isUnknown(i - w)) || (y + 1 < h && grid.isUnknown(i + w)));
 }
 
 /// Unknown and occupied areas [m^2] in the square of half-side `half_m` centred on `p`'s cell,
@@ -187,13 +217,16 @@ void SemanticExplorer::CellCounts::build(int x0, int y0, int x1, int y1, Test te
 }
 
 int SemanticExplorer::CellCounts::square(int cx, int cy, int r) const {
-  const int qx0 = std::clamp(cx - r, x0_, x1_ + 1) - x0_, qx1 = std::clamp(cx + r + 1, x0_, x1_ + 1) - x0_;
-  const int qy0 = std::clamp(cy - r, y0_, y1_ + 1) - y0_, qy1 = std::clamp(cy + r + 1, y0_, y1_ + 1) - y0_;
+  const int qx0 = std::clamp(cx - r, x0_, x1_ + 1) - x0_,
+            qx1 = std::clamp(cx + r + 1, x0_, x1_ + 1) - x0_;
+  const int qy0 = std::clamp(cy - r, y0_, y1_ + 1) - y0_,
+            qy1 = std::clamp(cy + r + 1, y0_, y1_ + 1) - y0_;
   auto at = [&](int x, int y) { return sums_.at<int>(y, x); };
   return at(qx1, qy1) - at(qx0, qy1) - at(qx1, qy0) + at(qx0, qy0);
 }
 
-SemanticExplorer::SemanticExplorer(std::uint64_t seed, const SemanticExplorerOptions& options, std::string name)
+SemanticExplorer::SemanticExplorer(std::uint64_t seed, const SemanticExplorerOptions& options,
+                                   std::string name)
     : options_(options), name_(std::move(name)), rng_(seed) {}
 
 SemanticExplorer::~SemanticExplorer() = default;
@@ -206,7 +239,8 @@ double SemanticExplorer::score(double gain_m2, double cost_m, bool in_current_ro
 
 bool SemanticExplorer::blacklisted(const Vec2& p) const {
   const double r2 = options_.blacklist_radius_m * options_.blacklist_radius_m;
-  return std::any_of(blacklist_.begin(), blacklist_.end(), [&](const Vec2& b) { return (b - p).squaredNorm() < r2; });
+  return std::any_of(blacklist_.begin(), blacklist_.end(),
+                     [&](const Vec2& b) { return (b - p).squaredNorm() < r2; });
 }
 
 void SemanticExplorer::onGoalReached(const Vec2& goal_m) { onGoalFailed(goal_m); }
@@ -244,7 +278,8 @@ std::optional<Vec2> SemanticExplorer::endPhaseCell(const ExplorationInput& input
   std::vector<Candidate>& cands = candidates_scored_;
   cands.clear();
   for (const Cell& c : cells) {
-    if (pockets.empty() || !pockets[g.index(c)]) cands.push_back({g.centerOf(c), 0, 0.0, false, false});
+    if (pockets.empty() || !pockets[g.index(c)])
+      cands.push_back({g.centerOf(c), 0, 0.0, false, false});
   }
   cost(input, cands, 1.0);
   double best_m = std::numeric_limits<double>::infinity();
@@ -280,7 +315,8 @@ double SemanticExplorer::segmentLength(const OccupancyGrid& grid, const Vec2& p)
   // The segments of the frontier cells within two cells of p (p is unknown, its frontier runs
   // beside it), each followed through its 8-connected frontier cells until it is known to be
   // at least segment_cap_m long.
-  const std::size_t cap = static_cast<std::size_t>(std::ceil(options_.segment_cap_m / g.resolution_m()));
+  const std::size_t cap =
+      static_cast<std::size_t>(std::ceil(options_.segment_cap_m / g.resolution_m()));
   const Cell c = g.cellOf(p);
   segment_seen_.begin(g.cellCount());
   std::size_t longest = 0;
@@ -290,7 +326,8 @@ double SemanticExplorer::segmentLength(const OccupancyGrid& grid, const Vec2& p)
       if (segment_seen_.marked(s) || !freeBesideUnknown(grid, sx, sy)) continue;
       segment_queue_.assign(1, Cell{sx, sy});
       segment_seen_.mark(s);
-      for (std::size_t head = 0; head < segment_queue_.size() && segment_queue_.size() < cap; ++head) {
+      for (std::size_t head = 0; head < segment_queue_.size() && segment_queue_.size() < cap;
+           ++head) {
         const Cell q = segment_queue_[head];
         for (int dy = -1; dy <= 1; ++dy) {
           for (int dx = -1; dx <= 1; ++dx) {
@@ -334,7 +371,8 @@ int SemanticExplorer::roomOf(const ExplorationInput& input, const Vec2& p) const
       if (const int label = map.roomAt(g.centerOf(q)); label != 0) return label;
     }
     if (steps >= r) continue;
-    for (const Cell n : {Cell{q.x + 1, q.y}, Cell{q.x - 1, q.y}, Cell{q.x, q.y + 1}, Cell{q.x, q.y - 1}}) {
+    for (const Cell n :
+         {Cell{q.x + 1, q.y}, Cell{q.x - 1, q.y}, Cell{q.x, q.y + 1}, Cell{q.x, q.y - 1}}) {
       if (!g.contains(n)) continue;
       const std::size_t i = g.index(n);
       if (label_seen_.marked(i) || !input.grid.isFree(i)) continue;
@@ -371,7 +409,8 @@ void SemanticExplorer::updateRoom(const ExplorationInput& input) {
 }
 
 bool SemanticExplorer::inCurrentRoom(int room) const {
-  return room != 0 && (room == room_ || std::find(leaves_.begin(), leaves_.end(), room) != leaves_.end());
+  return room != 0 &&
+         (room == room_ || std::find(leaves_.begin(), leaves_.end(), room) != leaves_.end());
 }
 
 void SemanticExplorer::collectCandidates(const ExplorationInput& input) {
@@ -414,8 +453,10 @@ void SemanticExplorer::collectCandidates(const ExplorationInput& input) {
   // Unknown cells counted over the box grown by G's square, so that a frontier cell whose
   // square holds less than min_unknown_m2 of unknown space (a sliver) is no candidate.
   const int r = static_cast<int>(std::lround(options_.gain_half_side_m / g.resolution_m()));
-  counts_.build(std::max(0, x0 - r), std::max(0, y0 - r), std::min(w - 1, x1 + r), std::min(g.height() - 1, y1 + r),
-                [&](int x, int y) { return input.grid.isUnknown(static_cast<std::size_t>(y) * w + x); });
+  counts_.build(std::max(0, x0 - r), std::max(0, y0 - r), std::min(w - 1, x1 + r),
+                std::min(g.height() - 1, y1 + r), [&](int x, int y) {
+                  return input.grid.isUnknown(static_cast<std::size_t>(y) * w + x);
+                });
   const double cell_m2 = g.resolution_m() * g.resolution_m();
   for (int y = y0; y <= y1; ++y) {
     for (int x = x0; x <= x1; ++x) {
@@ -443,8 +484,8 @@ void SemanticExplorer::grow(const ExplorationInput& input, long iterations) {
     if (!candidates_.empty() && p_sem > 0.0 && unitDouble(rng_) < p_sem) {
       // P_sem: a frontier cell of the current room, approached by a full step so that the
       // edge crosses the frontier into unknown space.
-      const Vec2 target = candidates_[std::min(candidates_.size() - 1,
-                                               static_cast<std::size_t>(unitDouble(rng_) * candidates_.size()))];
+      const Vec2 target = candidates_[std::min(
+          candidates_.size() - 1, static_cast<std::size_t>(unitDouble(rng_) * candidates_.size()))];
       const Vec2 from = tree_->node(tree_->nearest(target));
       const Vec2 d = target - from;
       const double len = d.norm();
@@ -467,7 +508,8 @@ void SemanticExplorer::grow(const ExplorationInput& input, long iterations) {
   }
 }
 
-void SemanticExplorer::cost(const ExplorationInput& input, std::vector<Candidate>& candidates, double w_c) {
+void SemanticExplorer::cost(const ExplorationInput& input, std::vector<Candidate>& candidates,
+                            double w_c) {
   const Vec2 robot = input.robot.position();
   for (Candidate& c : candidates) c.cost_m = (c.p - robot).norm();
   if (!options_.geodesic_cost) return;
@@ -523,11 +565,13 @@ void SemanticExplorer::cost(const ExplorationInput& input, std::vector<Candidate
       }
       if (c.goal) return false;
       open[c.sliver] = true;
-      open_bound[c.sliver] = std::max(open_bound[c.sliver], c.without_cost - w_c * std::max(d, c.cost_m));
+      open_bound[c.sliver] =
+          std::max(open_bound[c.sliver], c.without_cost - w_c * std::max(d, c.cost_m));
     }
     const bool points_done = !open[0] || open_bound[0] < best[0];
     // Slivers matter only when no other point can be chosen.
-    const bool slivers_done = !open[1] || open_bound[1] < best[1] || (best[0] > none && points_done);
+    const bool slivers_done =
+        !open[1] || open_bound[1] < best[1] || (best[0] > none && points_done);
     return points_done && slivers_done;
   };
   const float step = static_cast<float>(kBlock * g.resolution_m());
@@ -547,7 +591,8 @@ void SemanticExplorer::cost(const ExplorationInput& input, std::vector<Candidate
     const int x = static_cast<int>(i % w), y = static_cast<int>(i / w);
     for (int dy = -1; dy <= 1; ++dy) {
       for (int dx = -1; dx <= 1; ++dx) {
-        if ((dx == 0 && dy == 0) || x + dx < 0 || y + dy < 0 || x + dx >= w || y + dy >= h) continue;
+        if ((dx == 0 && dy == 0) || x + dx < 0 || y + dy < 0 || x + dx >= w || y + dy >= h)
+          continue;
         const std::size_t j = static_cast<std::size_t>(y + dy) * w + (x + dx);
         const float nd = d + ((dx != 0 && dy != 0) ? diag : step);
         if (nd < distOf(j) && passable(x + dx, y + dy)) {
@@ -560,14 +605,16 @@ void SemanticExplorer::cost(const ExplorationInput& input, std::vector<Candidate
     }
   }
   // Final distances: those not above the smallest distance still queued (all when it is empty).
-  const float final_up_to = heap_.empty() ? inf : std::min_element(heap_.begin(), heap_.end())->first;
+  const float final_up_to =
+      heap_.empty() ? inf : std::min_element(heap_.begin(), heap_.end())->first;
   for (Candidate& c : candidates) {
     const float dc = c.block < blocks ? distOf(c.block) : inf;
     c.cost_m = dc <= final_up_to ? dc : std::numeric_limits<double>::infinity();
   }
 }
 
-void SemanticExplorer::addFrontierMass(const OccupancyGrid& grid, std::vector<Candidate>& candidates) {
+void SemanticExplorer::addFrontierMass(const OccupancyGrid& grid,
+                                       std::vector<Candidate>& candidates) {
   if (options_.mass_weight <= 0.0 || candidates.empty()) return;
   // The frontier cells counted over the candidates' squares (freeBesideUnknown leaves out the
   // grid's border cells).
@@ -590,7 +637,8 @@ void SemanticExplorer::addFrontierMass(const OccupancyGrid& grid, std::vector<Ca
   for (Candidate& c : candidates) {
     const Cell q = g.cellOf(c.p);
     const int cells = counts_.square(q.x, q.y, r);
-    c.without_cost += options_.mass_weight * std::min(options_.mass_cap_m, cells * g.resolution_m());
+    c.without_cost +=
+        options_.mass_weight * std::min(options_.mass_cap_m, cells * g.resolution_m());
   }
 }
 
@@ -620,7 +668,8 @@ bool SemanticExplorer::endTest(const ExplorationInput& input) {
 void SemanticExplorer::followGeometry(const ExplorationInput& input, const GridGeometry& previous) {
   const GridGeometry& g = input.grid.geometry();
   const auto onGrid = [&g](const Vec2& p) { return g.contains(p); };
-  if (tree_ && tree_->rebound(g.origin_m(), farCorner(g), onGrid) == 0) tree_->reset(input.robot.position());
+  if (tree_ && tree_->rebound(g.origin_m(), farCorner(g), onGrid) == 0)
+    tree_->reset(input.robot.position());
   std::erase_if(points_, [&](const FrontierPoint& f) { return !onGrid(f.p); });
   // A point's mark is where it lies (one point per marked cell), so the marks are laid anew from
   // the points; with another resolution two points may now share a cell.
@@ -635,7 +684,8 @@ Decision SemanticExplorer::decide(const ExplorationInput& input) {
   const Vec2 robot = input.robot.position();
   if (const auto previous = geometry_.update(g)) followGeometry(input, *previous);
   if (!tree_) {
-    const Vec2 max_m = g.origin_m() + Vec2(g.width() * g.resolution_m(), g.height() * g.resolution_m());
+    const Vec2 max_m =
+        g.origin_m() + Vec2(g.width() * g.resolution_m(), g.height() * g.resolution_m());
     tree_ = std::make_unique<RrtTree>(options_.eta_m, g.origin_m(), max_m, 0.5);
     tree_->reset(robot);
     grown_until_s_ = input.time_s;
@@ -723,19 +773,20 @@ Decision SemanticExplorer::decide(const ExplorationInput& input) {
       return options_.heading_weight * 0.5 * (1.0 - heading.dot(d) / len);
     };
     auto segmentTerm = [&](const Vec2& p) {
-      return options_.segment_weight > 0.0 ? options_.segment_weight * segmentLength(input.grid, p) : 0.0;
+      return options_.segment_weight > 0.0 ? options_.segment_weight * segmentLength(input.grid, p)
+                                           : 0.0;
     };
     for (std::size_t i = 0; i < points_.size(); ++i) {
       const std::size_t cell = g.index(g.cellOf(points_[i].p));
       const SquareAreas a =
           squareAreas(input.grid, points_[i].p, options_.gain_half_side_m, frontier_wanted);
-      const bool sliver =
-          exhausted(a, options_, g.resolution_m()) || (options_.pocket_area_m2 > 0.0 && pockets_[cell]);
+      const bool sliver = exhausted(a, options_, g.resolution_m()) ||
+                          (options_.pocket_area_m2 > 0.0 && pockets_[cell]);
       if (sliver && (!slivers_wanted || visited_[cell])) continue;
       const bool inside = inCurrentRoom(roomOf(input, points_[i].anchor));
       if (sliver && !inside) continue;
-      const double without_cost = score(a.unknown_m2 - a.occupied_m2, 0.0, inside) - turn(points_[i].p) +
-                                  segmentTerm(points_[i].p);
+      const double without_cost = score(a.unknown_m2 - a.occupied_m2, 0.0, inside) -
+                                  turn(points_[i].p) + segmentTerm(points_[i].p);
       cands.push_back({points_[i].p, i, without_cost, sliver, false});
       cands.back().inside = inside;
     }
@@ -791,7 +842,8 @@ Decision SemanticExplorer::decide(const ExplorationInput& input) {
     if (const std::optional<Vec2> cell = endPhaseCell(input)) return Decision::goal(*cell);
     return Decision::done();
   }
-  if (const auto wait = nearestGoalCell(input.grid, input.costmap, robot, 3.0)) return Decision::goal(*wait);
+  if (const auto wait = nearestGoalCell(input.grid, input.costmap, robot, 3.0))
+    return Decision::goal(*wait);
   return Decision::done();
 }
 

@@ -96,65 +96,65 @@
 namespace roomscout {
 
 struct SemanticExplorerOptions {
-  double k = 0.1;                      ///< weight of the time in the room in P(P_sem) [1/s]
-  double gain_weight = 3.0;            ///< w_g [1/m^2]
-  double cost_weight = 1.0;            ///< w_c [1/m]
-  double room_reward = 3.0;            ///< A: added inside the current room, subtracted outside
-  double gain_half_side_m = 1.0;       ///< half-side of G's square [m]
-  double min_unknown_m2 = 1.0;         ///< points with less unknown area in the square are
-                                       ///< goals only when nothing else was found for
-                                       ///< idle_end_s (slivers along walls, furniture faces,
-                                       ///< far room corners)
-  double min_frontier_m = 1.0;         ///< ... or less frontier (free cells next to unknown, x
-                                       ///< the cell size) in the square: its unknown space lies
-                                       ///< behind walls seen already; 0 = off [m]
-  double pocket_area_m2 = 2.0;         ///< points opening onto less unknown, non-lethal area
-                                       ///< (4-connected) count as slivers; 0 = off [m^2]
-  double pocket_area_fraction = 0.01;  ///< once idle, a pocket must also be smaller than this
-                                       ///< fraction of the known free area (in a small flat a
-                                       ///< wedge of floor seen past a door jamb is no
-                                       ///< cupboard); 0 = pocket_area_m2 alone
-  bool geodesic_cost = true;           ///< C = path length through the costmap, not Euclidean
-  double eta_m = 1.0;                  ///< tree step [m]
-  double iterations_per_s = 300.0;     ///< tree iterations per simulated second
-  double replan_period_s = 2.0;        ///< re-evaluation period while driving [s]
-  double switch_margin = 6.0;          ///< another point must beat the goal's score by this
-  double label_search_m = 3.5;         ///< unlabelled free cells take the room of the nearest
-                                       ///< labelled cell this far through free cells (the
-                                       ///< laser's range: the robot saw them from its room) [m]
-  double blacklist_radius_m = 0.3;     ///< reached or failed goals drop points this close [m]
-  double end_check_period_s = 1.0;     ///< period of the end test [s]
-  int end_checks = 5;                  ///< consecutive failing end tests that end exploration
-  int end_min_frontier_cells = 2;      ///< fewer reachable frontier cells fail the end test
-  double observed_radius_m = 0.75;     ///< end test ignores frontier cells that stayed unknown
-                                       ///< with the robot this close [m]
-  double idle_end_s = 30.0;            ///< idling this long: the current room's slivers, then
-                                       ///< the end phase [s]
-  int max_iterations_per_call = 20000; ///< cap on owed iterations run in one call
-  int hub_min_neighbours = 4;          ///< a room with this many neighbouring rooms is a hub:
-                                       ///< there no +-A and P_sem near the robot; 0 = off
-  double next_room_cost_factor = 3.0;  ///< choosing the next room (in a hub, or no point
-                                       ///< left in the current room but slivers): C weighs
-                                       ///< this many times w_c; 1 = off
-  double hub_sample_radius_m = 4.5;    ///< in a hub, P_sem is drawn from the frontier cells
-                                       ///< (of any room) in the square of this half-side
-                                       ///< around the robot; 0 = no P_sem in a hub [m]
-  double heading_weight = 8.0;         ///< S -= heading_weight (1 - cos d) / 2, d the angle
-                                       ///< between the robot's heading and the line to the
-                                       ///< point: turning back costs this much (the current
-                                       ///< goal never pays it); 0 = off
-  double segment_weight = 4.0;         ///< S += segment_weight min(L, segment_cap_m), L the
-                                       ///< length of the frontier segment the point opens
-                                       ///< onto [1/m]; 0 = off
-  double segment_cap_m = 2.0;          ///< cap on L [m]
-  double mass_weight = 1.0;            ///< choosing the next room: S += mass_weight min(M,
-                                       ///< mass_cap_m), M the frontier around the point [1/m];
-                                       ///< 0 = off
-  double mass_half_side_m = 3.0;       ///< half-side of the square M is counted in [m]
-  double mass_cap_m = 10.0;            ///< cap on M [m]
-  bool leaf_rooms = true;              ///< a room whose only neighbour is the current room
-                                       ///< counts as part of it: +A for its points, P_sem
-                                       ///< from its frontier too
+  double k = 0.1;                       ///< weight of the time in the room in P(P_sem) [1/s]
+  double gain_weight = 3.0;             ///< w_g [1/m^2]
+  double cost_weight = 1.0;             ///< w_c [1/m]
+  double room_reward = 3.0;             ///< A: added inside the current room, subtracted outside
+  double gain_half_side_m = 1.0;        ///< half-side of G's square [m]
+  double min_unknown_m2 = 1.0;          ///< points with less unknown area in the square are
+                                        ///< goals only when nothing else was found for
+                                        ///< idle_end_s (slivers along walls, furniture faces,
+                                        ///< far room corners)
+  double min_frontier_m = 1.0;          ///< ... or less frontier (free cells next to unknown, x
+                                        ///< the cell size) in the square: its unknown space lies
+                                        ///< behind walls seen already; 0 = off [m]
+  double pocket_area_m2 = 2.0;          ///< points opening onto less unknown, non-lethal area
+                                        ///< (4-connected) count as slivers; 0 = off [m^2]
+  double pocket_area_fraction = 0.01;   ///< once idle, a pocket must also be smaller than this
+                                        ///< fraction of the known free area (in a small flat a
+                                        ///< wedge of floor seen past a door jamb is no
+                                        ///< cupboard); 0 = pocket_area_m2 alone
+  bool geodesic_cost = true;            ///< C = path length through the costmap, not Euclidean
+  double eta_m = 1.0;                   ///< tree step [m]
+  double iterations_per_s = 300.0;      ///< tree iterations per simulated second
+  double replan_period_s = 2.0;         ///< re-evaluation period while driving [s]
+  double switch_margin = 6.0;           ///< another point must beat the goal's score by this
+  double label_search_m = 3.5;          ///< unlabelled free cells take the room of the nearest
+                                        ///< labelled cell this far through free cells (the
+                                        ///< laser's range: the robot saw them from its room) [m]
+  double blacklist_radius_m = 0.3;      ///< reached or failed goals drop points this close [m]
+  double end_check_period_s = 1.0;      ///< period of the end test [s]
+  int end_checks = 5;                   ///< consecutive failing end tests that end exploration
+  int end_min_frontier_cells = 2;       ///< fewer reachable frontier cells fail the end test
+  double observed_radius_m = 0.75;      ///< end test ignores frontier cells that stayed unknown
+                                        ///< with the robot this close [m]
+  double idle_end_s = 30.0;             ///< idling this long: the current room's slivers, then
+                                        ///< the end phase [s]
+  int max_iterations_per_call = 20000;  ///< cap on owed iterations run in one call
+  int hub_min_neighbours = 4;           ///< a room with this many neighbouring rooms is a hub:
+                                        ///< there no +-A and P_sem near the robot; 0 = off
+  double next_room_cost_factor = 3.0;   ///< choosing the next room (in a hub, or no point
+                                        ///< left in the current room but slivers): C weighs
+                                        ///< this many times w_c; 1 = off
+  double hub_sample_radius_m = 4.5;     ///< in a hub, P_sem is drawn from the frontier cells
+                                        ///< (of any room) in the square of this half-side
+                                        ///< around the robot; 0 = no P_sem in a hub [m]
+  double heading_weight = 8.0;          ///< S -= heading_weight (1 - cos d) / 2, d the angle
+                                        ///< between the robot's heading and the line to the
+                                        ///< point: turning back costs this much (the current
+                                        ///< goal never pays it); 0 = off
+  double segment_weight = 4.0;          ///< S += segment_weight min(L, segment_cap_m), L the
+                                        ///< length of the frontier segment the point opens
+                                        ///< onto [1/m]; 0 = off
+  double segment_cap_m = 2.0;           ///< cap on L [m]
+  double mass_weight = 1.0;             ///< choosing the next room: S += mass_weight min(M,
+                                        ///< mass_cap_m), M the frontier around the point [1/m];
+                                        ///< 0 = off
+  double mass_half_side_m = 3.0;        ///< half-side of the square M is counted in [m]
+  double mass_cap_m = 10.0;             ///< cap on M [m]
+  bool leaf_rooms = true;               ///< a room whose only neighbour is the current room
+                                        ///< counts as part of it: +A for its points, P_sem
+                                        ///< from its frontier too
 
   void validate() const;
   std::vector<ParameterRef> parameters();
@@ -243,8 +243,8 @@ class SemanticExplorer final : public ExplorationStrategy {
     double without_cost;  ///< S without the cost term: w_g G +- A
     bool sliver;
     bool goal;
-    double cost_m = 0.0;  ///< C; infinite when unreachable (or, geodesic, when it cannot win)
-    bool inside = false;  ///< in the current room (points only)
+    double cost_m = 0.0;    ///< C; infinite when unreachable (or, geodesic, when it cannot win)
+    bool inside = false;    ///< in the current room (points only)
     std::size_t block = 0;  ///< geodesic C: the search block of p
   };
   /// Sets every candidate's C (see SemanticExplorerOptions::geodesic_cost); w_c is the weight
@@ -271,9 +271,9 @@ class SemanticExplorer final : public ExplorationStrategy {
   double last_end_check_s_ = -1e9;
   int failed_end_checks_ = 0;
   double idle_since_s_ = -1.0;
-  bool chasing_slivers_ = false;  ///< the goal is a sliver chosen after idle_end_s of idling
-  bool end_phase_ = false;        ///< idled once with nothing to assign (see decide())
-  std::optional<Vec2> end_cell_;  ///< the end phase's current frontier cell
+  bool chasing_slivers_ = false;      ///< the goal is a sliver chosen after idle_end_s of idling
+  bool end_phase_ = false;            ///< idled once with nothing to assign (see decide())
+  std::optional<Vec2> end_cell_;      ///< the end phase's current frontier cell
   std::vector<Vec2> end_cells_done_;  ///< end-phase cells reached or failed since the last call
   double last_eval_s_ = -1e9;
   int room_ = 0;
@@ -289,8 +289,8 @@ class SemanticExplorer final : public ExplorationStrategy {
   std::vector<std::uint8_t> visited_;
   std::vector<std::uint8_t> pockets_;
   std::vector<Candidate> candidates_scored_;
-  std::vector<float> dist_;                  ///< geodesic C: Dijkstra distances [m] ...
-  VisitMarks dist_valid_;                    ///< ... valid where marked
+  std::vector<float> dist_;  ///< geodesic C: Dijkstra distances [m] ...
+  VisitMarks dist_valid_;    ///< ... valid where marked
   std::vector<std::pair<float, std::size_t>> heap_;
   bool idle_ = false;  ///< idle for idle_end_s: slivers, then the end phase
   bool has_goal_ = false;

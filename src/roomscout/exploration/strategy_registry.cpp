@@ -36,15 +36,13 @@ const std::vector<StrategyEntry>& strategyRegistry() {
        "the paper's semantic-region-aware RRT exploration: samples drawn from the current room's "
        "frontier with probability kt/(1+kt), score = w_g*G - w_c*C +/- A (current room or not)",
        [](std::uint64_t seed) { return std::make_unique<SemanticExplorer>(seed); }},
-      {"semantic_sampling_only",
-       "ablation of semantic: room-biased sampling, plain score (A = 0)",
+      {"semantic_sampling_only", "ablation of semantic: room-biased sampling, plain score (A = 0)",
        [](std::uint64_t seed) {
          SemanticExplorerOptions o;
          o.room_reward = 0.0;
          return std::make_unique<SemanticExplorer>(seed, o, "semantic_sampling_only");
        }},
-      {"semantic_score_only",
-       "ablation of semantic: uniform sampling (k = 0), room-aware score",
+      {"semantic_score_only", "ablation of semantic: uniform sampling (k = 0), room-aware score",
        [](std::uint64_t seed) {
          SemanticExplorerOptions o;
          o.k = 0.0;

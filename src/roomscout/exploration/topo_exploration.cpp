@@ -22,8 +22,10 @@ void TopoExplorationOptions::validate() const {
   }
   if (cluster_min_samples < 1) throw OptionError("topo.cluster_min_samples must be >= 1");
   if (min_cluster_points < 1) throw OptionError("topo.min_cluster_points must be >= 1");
-  if (refresh_min_cluster_points < 1) throw OptionError("topo.refresh_min_cluster_points must be >= 1");
-  if (!non_negative(refresh_open_unknown_m2)) throw OptionError("topo.refresh_open_unknown_m2 must be >= 0");
+  if (refresh_min_cluster_points < 1)
+    throw OptionError("topo.refresh_min_cluster_points must be >= 1");
+  if (!non_negative(refresh_open_unknown_m2))
+    throw OptionError("topo.refresh_open_unknown_m2 must be >= 0");
   if (!non_negative(frontier_point_offset_m) || !non_negative(goal_offset_m)) {
     throw OptionError("topo: frontier_point_offset_m and goal_offset_m must be >= 0");
   }
@@ -259,7 +261,8 @@ TopoExploration::Direction directionTo(const Vec2& from_m, const FrontierCluster
 /// Whether the unknown space next to `p_m` (the unknown cells within 2 cells of it and those
 /// 4-connected to them) holds at least `cap` cells: a way into unseen space rather than a
 /// pocket behind furniture. `seen` is scratch of one byte per cell, all 0, and left all 0.
-bool opensOntoUnknown(const OccupancyGrid& grid, const Vec2& p_m, std::size_t cap, std::vector<std::uint8_t>& seen) {
+bool opensOntoUnknown(const OccupancyGrid& grid, const Vec2& p_m, std::size_t cap,
+                      std::vector<std::uint8_t>& seen) {
   const GridGeometry& g = grid.geometry();
   const Cell c = g.cellOf(p_m);
   std::vector<std::size_t> queue;
@@ -448,9 +451,12 @@ bool TopoExploration::refreshAll(const OccupancyGrid& grid) {
     small.min_cluster_points = options_.refresh_min_cluster_points;
     clusters = frontierClusters(grid, g.bounds(), small, &ignore);
     const double cell_m2 = g.resolution_m() * g.resolution_m();
-    const auto cap = static_cast<std::size_t>(std::max(1.0, std::ceil(options_.refresh_open_unknown_m2 / cell_m2)));
+    const auto cap = static_cast<std::size_t>(
+        std::max(1.0, std::ceil(options_.refresh_open_unknown_m2 / cell_m2)));
     std::vector<std::uint8_t> seen(g.cellCount(), 0);
-    std::erase_if(clusters, [&](const FrontierCluster& c) { return !opensOntoUnknown(grid, c.anchor_m, cap, seen); });
+    std::erase_if(clusters, [&](const FrontierCluster& c) {
+      return !opensOntoUnknown(grid, c.anchor_m, cap, seen);
+    });
   }
   for (const FrontierCluster& c : clusters) {
     auto nearest =

@@ -20,12 +20,13 @@ std::vector<ParameterRef> AnalysisMapsOptions::parameters() {
   return {
       {"period_s", &period_s, "simulated time between update checks [s]"},
       {"min_new_area_m2", &min_new_area_m2, "newly known area that triggers an update [m^2]"},
-      {"topology_every", &topology_every, "rebuild the topological map on every n-th due update only"},
+      {"topology_every", &topology_every,
+       "rebuild the topological map on every n-th due update only"},
   };
 }
 
-AnalysisMap::AnalysisMap(AnalysisMapKind kind, const AnalysisMapsOptions& options, const AnalysisMap* rooms,
-                         MapWorker* worker)
+AnalysisMap::AnalysisMap(AnalysisMapKind kind, const AnalysisMapsOptions& options,
+                         const AnalysisMap* rooms, MapWorker* worker)
     : kind_(kind),
       options_(options),
       rooms_(kind == AnalysisMapKind::kTopological ? rooms : nullptr),
@@ -66,7 +67,8 @@ void AnalysisMap::observe(const OccupancyGrid& grid, double time_s, bool grid_ch
       std::abs(static_cast<double>(known) - static_cast<double>(known_at_update_)) * res * res;
   if (updated_once_ && new_area_m2 < options_.min_new_area_m2) return;
   known_at_update_ = known;
-  if (kind_ == AnalysisMapKind::kTopological && due_updates_++ % options_.topology_every != 0) return;
+  if (kind_ == AnalysisMapKind::kTopological && due_updates_++ % options_.topology_every != 0)
+    return;
   update(grid);
 }
 
@@ -80,7 +82,8 @@ void AnalysisMap::update(const OccupancyGrid& grid) {
   changed_ = false;
   updated_once_ = true;
   // Rooms built on another thread are read once that thread has built them.
-  if (rooms_ != nullptr && rooms_->worker_ != nullptr && rooms_->worker_ != worker_) rooms_->worker_->drain();
+  if (rooms_ != nullptr && rooms_->worker_ != nullptr && rooms_->worker_ != worker_)
+    rooms_->worker_->drain();
   if (worker_ == nullptr) {
     maps::stateImage(grid, states_);
     build(states_, grid.geometry(), nullptr);
@@ -90,22 +93,26 @@ void AnalysisMap::update(const OccupancyGrid& grid) {
   // worker are read when this job runs, after theirs; others are copied now (the copy shares
   // their label image, which an update replaces rather than writes into).
   std::shared_ptr<const SemanticMap> rooms;
-  if (rooms_ != nullptr && rooms_->worker_ != worker_) rooms = std::make_shared<const SemanticMap>(rooms_->semantic_);
-  worker_->post([this, states = maps::stateImage(grid), geometry = grid.geometry(), rooms = std::move(rooms)] {
-    build(states, geometry, rooms);
-  });
+  if (rooms_ != nullptr && rooms_->worker_ != worker_)
+    rooms = std::make_shared<const SemanticMap>(rooms_->semantic_);
+  worker_->post([this, states = maps::stateImage(grid), geometry = grid.geometry(),
+                 rooms = std::move(rooms)] { build(states, geometry, rooms); });
 }
 
 void AnalysisMap::build(const cv::Mat& states, const GridGeometry& geometry,
-                                 std::shared_ptr<const SemanticMap> rooms) {
+                        std::shared_ptr<const SemanticMap> rooms) {
   const auto t0 = std::chrono::steady_clock::now();
   if (kind_ == AnalysisMapKind::kSemantic) {
     const RoomSegmentation seg = segmenter_.segment(states, geometry.resolution_m());
     semantic_.update(geometry, seg.labels, states);
   } else {
-    topology_ = builder_.build(states, geometry, rooms ? rooms.get() : rooms_ ? rooms_->semanticMap() : nullptr);
+    topology_ = builder_.build(states, geometry,
+                               rooms    ? rooms.get()
+                               : rooms_ ? rooms_->semanticMap()
+                                        : nullptr);
   }
-  update_ms_.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+  update_ms_.push_back(
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
 }
 
 }  // namespace roomscout

@@ -29,13 +29,13 @@ namespace roomscout {
 enum class AnalysisMapKind { kTopological, kSemantic };
 
 struct AnalysisMapsOptions {
-  double period_s = 1.0;  ///< time between update checks [s]
+  double period_s = 1.0;         ///< time between update checks [s]
   double min_new_area_m2 = 2.0;  ///< update only when at least this much of the grid became
                                  ///< known since the last update [m^2]: re-traversing known
                                  ///< space changes nothing worth 10-30 ms of analysis
-  int topology_every = 1;  ///< the topological map is rebuilt on every n-th due update only
-                           ///< (always on the first and at the end). No strategy reads it, so
-                           ///< its final map is the same for any n; n > 1 only saves time
+  int topology_every = 1;        ///< the topological map is rebuilt on every n-th due update only
+                                 ///< (always on the first and at the end). No strategy reads it, so
+                                 ///< its final map is the same for any n; n > 1 only saves time
   RoomSegmenterOptions segmentation;
   TopologyBuilderOptions topology;
   void validate() const;
@@ -75,7 +75,8 @@ class AnalysisMap {
  private:
   void update(const OccupancyGrid& grid);
   /// Builds the map from one update's inputs (on the worker, if any).
-  void build(const cv::Mat& states, const GridGeometry& geometry, std::shared_ptr<const SemanticMap> rooms);
+  void build(const cv::Mat& states, const GridGeometry& geometry,
+             std::shared_ptr<const SemanticMap> rooms);
 
   AnalysisMapKind kind_;
   AnalysisMapsOptions options_;
@@ -85,9 +86,9 @@ class AnalysisMap {
   TopologyBuilder builder_;
   SemanticMap semantic_;
   TopologicalMap topology_;
-  cv::Mat states_;  ///< the grid's cell states at the last update (buffer reused)
+  cv::Mat states_;                 ///< the grid's cell states at the last update (buffer reused)
   std::vector<double> update_ms_;  ///< written by build()
-  std::size_t updates_ = 0;         ///< updates decided so far (build() may still be behind)
+  std::size_t updates_ = 0;        ///< updates decided so far (build() may still be behind)
   double next_update_s_ = 0.0;
   bool changed_ = false;
   std::size_t known_at_update_ = 0;

@@ -45,7 +45,8 @@ void GoalWatchdogOptions::validate() const {
       !finiteNonNegative(recovery_time_s)) {
     throw OptionError("episode: no_progress_timeout_s must be > 0 and recovery_time_s >= 0");
   }
-  if (!(std::isfinite(stall_timeout_s) && stall_timeout_s > 0.0) || !finiteNonNegative(stall_radius_m)) {
+  if (!(std::isfinite(stall_timeout_s) && stall_timeout_s > 0.0) ||
+      !finiteNonNegative(stall_radius_m)) {
     throw OptionError("episode: stall_timeout_s must be > 0 and stall_radius_m >= 0");
   }
   if (!finiteNonNegative(stall_min_new_area_m2)) {
@@ -61,18 +62,24 @@ std::vector<ParameterRef> GoalWatchdogOptions::parameters() {
   return {
       {"no_progress_timeout_s", &no_progress_timeout_s, "no progress this long fails the goal [s]"},
       {"recovery_time_s", &recovery_time_s, "duration of a back-off recovery [s]"},
-      {"stall_timeout_s", &stall_timeout_s, "no new map and little motion this long fails the goal [s]"},
-      {"stall_radius_m", &stall_radius_m, "motion radius under which the robot counts as stalled [m]"},
+      {"stall_timeout_s", &stall_timeout_s,
+       "no new map and little motion this long fails the goal [s]"},
+      {"stall_radius_m", &stall_radius_m,
+       "motion radius under which the robot counts as stalled [m]"},
       {"stall_min_new_area_m2", &stall_min_new_area_m2,
-       "new known free area under which a stall window counts [m^2]; simulator: 0 = 0.1 % of the reachable floor"},
-      {"max_decisions_per_step", &max_decisions_per_step, "failed goals tried in a row before waiting"},
+       "new known free area under which a stall window counts [m^2]; simulator: 0 = 0.1 % of the "
+       "reachable floor"},
+      {"max_decisions_per_step", &max_decisions_per_step,
+       "failed goals tried in a row before waiting"},
   };
 }
 
 std::vector<ParameterRef> GoalWatchdogOptions::followerParameters() {
   return {
-      {"goal_tolerance_m", &goal_tolerance_m, "distance to the path's last waypoint that counts as reached [m]"},
-      {"lookahead_m", &lookahead_m, "distance from the robot to the pure-pursuit carrot on the path ahead [m]"},
+      {"goal_tolerance_m", &goal_tolerance_m,
+       "distance to the path's last waypoint that counts as reached [m]"},
+      {"lookahead_m", &lookahead_m,
+       "distance from the robot to the pure-pursuit carrot on the path ahead [m]"},
   };
 }
 
@@ -120,8 +127,8 @@ Explorer::Explorer(ExplorationStrategy& strategy, const ExplorerOptions& options
                                            reads_rooms ? nullptr : worker_.get());
   }
   if (options_.all_maps) {
-    skeleton_ = std::make_unique<AnalysisMap>(AnalysisMapKind::kTopological, options_.maps, rooms_.get(),
-                                              worker_.get());
+    skeleton_ = std::make_unique<AnalysisMap>(AnalysisMapKind::kTopological, options_.maps,
+                                              rooms_.get(), worker_.get());
   }
 }
 
@@ -129,13 +136,14 @@ Explorer::~Explorer() = default;
 
 double Explorer::relative(double time_s, const char* what) const {
   if (!std::isfinite(time_s)) {
-    throw InvalidArgument(std::string("explorer: ") + what + " time is not finite (" + std::to_string(time_s) + ")");
+    throw InvalidArgument(std::string("explorer: ") + what + " time is not finite (" +
+                          std::to_string(time_s) + ")");
   }
   const double t = clock_start_s_ ? time_s - *clock_start_s_ : 0.0;
   if (clock_start_s_ && t < last_time_s_) {
-    throw InvalidArgument(std::string("explorer: ") + what + " time went backwards: " +
-                          std::to_string(time_s) + " s after " + std::to_string(*clock_start_s_ + last_time_s_) +
-                          " s");
+    throw InvalidArgument(std::string("explorer: ") + what +
+                          " time went backwards: " + std::to_string(time_s) + " s after " +
+                          std::to_string(*clock_start_s_ + last_time_s_) + " s");
   }
   return t;
 }
@@ -183,7 +191,8 @@ void Explorer::stallWatchdog(const OccupancyGrid& grid, const Vec2& robot, doubl
     stall_window_started_ = true;
     stall_window_position_ = robot;
   }
-  stall_window_excursion_m_ = std::max(stall_window_excursion_m_, (robot - stall_window_position_).norm());
+  stall_window_excursion_m_ =
+      std::max(stall_window_excursion_m_, (robot - stall_window_position_).norm());
   if (t - stall_window_start_s_ < options_.goals.stall_timeout_s) return;
   const double cell_m2 = grid.geometry().resolution_m() * grid.geometry().resolution_m();
   const double free_now_m2 = static_cast<double>(freeCells(grid)) * cell_m2;
@@ -201,19 +210,22 @@ void Explorer::stallWatchdog(const OccupancyGrid& grid, const Vec2& robot, doubl
 bool Explorer::pathBlocked(const OccupancyGrid& grid, const Vec2& robot) const {
   // Beyond the laser's range a new scan cannot have blocked the path.
   const double horizon_m = options_.goals.laser_range_m + options_.costmap.lethalRadius_m() + 0.5;
-  return pathBlockedAhead(grid, progress_.path().waypoints_m, progress_.index(), robot, horizon_m, lethal_disc_);
+  return pathBlockedAhead(grid, progress_.path().waypoints_m, progress_.index(), robot, horizon_m,
+                          lethal_disc_);
 }
 
 ExplorerCommand Explorer::update(const ExplorerInput& input) {
   const OccupancyGrid& grid = input.grid;
   const GridGeometry& g = grid.geometry();
   if (g.width() <= 0 || g.height() <= 0) {
-    throw InvalidArgument("explorer: the occupancy grid is empty (" + std::to_string(g.width()) + " x " +
-                          std::to_string(g.height()) + " cells)");
+    throw InvalidArgument("explorer: the occupancy grid is empty (" + std::to_string(g.width()) +
+                          " x " + std::to_string(g.height()) + " cells)");
   }
-  if (!std::isfinite(input.robot.x_m) || !std::isfinite(input.robot.y_m) || !std::isfinite(input.robot.yaw_rad)) {
-    throw InvalidArgument("explorer: robot pose is not finite (" + std::to_string(input.robot.x_m) + ", " +
-                          std::to_string(input.robot.y_m) + ", " + std::to_string(input.robot.yaw_rad) + ")");
+  if (!std::isfinite(input.robot.x_m) || !std::isfinite(input.robot.y_m) ||
+      !std::isfinite(input.robot.yaw_rad)) {
+    throw InvalidArgument("explorer: robot pose is not finite (" + std::to_string(input.robot.x_m) +
+                          ", " + std::to_string(input.robot.y_m) + ", " +
+                          std::to_string(input.robot.yaw_rad) + ")");
   }
   const double t = relative(input.time_s, "update");
   if (!clock_start_s_) clock_start_s_ = input.time_s;
@@ -262,9 +274,11 @@ ExplorerCommand Explorer::update(const ExplorerInput& input) {
   const bool periodic = goal_ && period > 0.0 && t - last_decision_s_ >= period;
   if (t >= recovery_until_s_ && t >= next_decision_s_ && (need_decision_ || periodic)) {
     refreshCostmap(grid);
-    const SemanticMap* semantic = strategy_->readsRooms() && rooms_ ? rooms_->semanticMap() : nullptr;
+    const SemanticMap* semantic =
+        strategy_->readsRooms() && rooms_ ? rooms_->semanticMap() : nullptr;
     bool have_goal = false;
-    for (int attempt = 0; attempt < options_.goals.max_decisions_per_step && !done_ && !have_goal; ++attempt) {
+    for (int attempt = 0; attempt < options_.goals.max_decisions_per_step && !done_ && !have_goal;
+         ++attempt) {
       const ExplorationInput in{grid, costmap_, input.robot, t, semantic};
       const auto start = Clock::now();
       const Decision d = strategy_->decide(in);
@@ -284,7 +298,8 @@ ExplorerCommand Explorer::update(const ExplorerInput& input) {
     }
     last_decision_s_ = t;
     need_decision_ = !have_goal && !done_;
-    if (need_decision_) next_decision_s_ = t + kRetryDelay_s;  // every candidate failed: wait for new data
+    if (need_decision_)
+      next_decision_s_ = t + kRetryDelay_s;  // every candidate failed: wait for new data
   }
   if (done_) {
     command.kind = ExplorerCommand::Kind::kDone;

@@ -60,14 +60,14 @@ struct GoalWatchdogOptions {
 
 /// Every option of an Explorer. The YAML groups are those `roomscout explore --config` reads.
 struct ExplorerOptions {
-  CostmapOptions costmap;       ///< group "costmap"
-  AStarOptions planner;         ///< group "planner"
-  GoalWatchdogOptions goals;    ///< groups "episode", "follower" and "laser"
-  AnalysisMapsOptions maps;     ///< groups "maps", "segmentation", "topology"
-  bool all_maps = true;         ///< also build the rooms and skeleton graph a strategy does not
-                                ///< read (for display and saving); not in YAML
-  bool background_maps = false; ///< build the maps the strategy does not read on a background
-                                ///< thread below the caller's priority; not in YAML
+  CostmapOptions costmap;        ///< group "costmap"
+  AStarOptions planner;          ///< group "planner"
+  GoalWatchdogOptions goals;     ///< groups "episode", "follower" and "laser"
+  AnalysisMapsOptions maps;      ///< groups "maps", "segmentation", "topology"
+  bool all_maps = true;          ///< also build the rooms and skeleton graph a strategy does not
+                                 ///< read (for display and saving); not in YAML
+  bool background_maps = false;  ///< build the maps the strategy does not read on a background
+                                 ///< thread below the caller's priority; not in YAML
   void validate() const;
   std::vector<ParameterGroup> groups();
 };
@@ -168,14 +168,14 @@ class Explorer {
   AStarPlanner planner_;
   PathProgress progress_;  ///< the current goal's path and how far the robot came along it
   std::uint64_t path_version_ = 0, sent_path_version_ = 0;  ///< paths planned / sent so far
-  std::unique_ptr<MapWorker> worker_;  ///< before the maps, whose jobs it runs
+  std::unique_ptr<MapWorker> worker_;                       ///< before the maps, whose jobs it runs
   std::unique_ptr<AnalysisMap> rooms_, skeleton_;
   std::vector<Cell> lethal_disc_;
   double lethal_disc_resolution_m_ = 0.0;
   ExplorerStats stats_;
 
   std::optional<double> clock_start_s_;  ///< time_s of the first update: times are relative
-  double last_time_s_ = 0.0;            ///< relative time of the last update
+  double last_time_s_ = 0.0;             ///< relative time of the last update
   bool done_ = false;
   std::optional<Vec2> goal_;
   bool need_decision_ = true;

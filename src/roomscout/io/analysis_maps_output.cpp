@@ -18,22 +18,30 @@ cv::Mat groundTruthRoomLabels(const OccupancyGrid& grid, const sim::WorldModel& 
   return labels;
 }
 
-nlohmann::json writeAnalysisMaps(const std::filesystem::path& directory, const AnalysisMap& semantic,
-                                 const AnalysisMap& topological, const OccupancyGrid& grid,
-                                 const sim::WorldModel* world) {
+nlohmann::json writeAnalysisMaps(const std::filesystem::path& directory,
+                                 const AnalysisMap& semantic, const AnalysisMap& topological,
+                                 const OccupancyGrid& grid, const sim::WorldModel* world) {
   const SemanticMap& rooms = *semantic.semanticMap();
   const TopologicalMap& topo = topological.topologicalMap();
   nlohmann::json extra = nlohmann::json::object();
-  nlohmann::json summary = {
-      {"topological", {{"files", {"topology.json", "topology.png"}}, {"nodes", topo.nodes().size()},
-                       {"edges", topo.edges().size()}, {"updates", topological.updateTimes_ms().size()}}},
-      {"semantic", {{"files", {"semantic.json", "semantic.png", "semantic_labels.png"}},
-                    {"regions", rooms.regions().size()}, {"updates", semantic.updateTimes_ms().size()}}}};
+  nlohmann::json summary = {{"topological",
+                             {{"files", {"topology.json", "topology.png"}},
+                              {"nodes", topo.nodes().size()},
+                              {"edges", topo.edges().size()},
+                              {"updates", topological.updateTimes_ms().size()}}},
+                            {"semantic",
+                             {{"files", {"semantic.json", "semantic.png", "semantic_labels.png"}},
+                              {"regions", rooms.regions().size()},
+                              {"updates", semantic.updateTimes_ms().size()}}}};
   if (world != nullptr && world->hasRooms()) {
-    const SegmentationScore s = scoreSegmentation(rooms.labels(), groundTruthRoomLabels(grid, *world));
-    extra["ground_truth_score"] = {{"rooms", s.ground_truth_rooms}, {"segments", s.segments},
-                                   {"recall", s.recall}, {"precision", s.precision},
-                                   {"pooled_recall", s.pooled_recall}, {"pooled_precision", s.pooled_precision},
+    const SegmentationScore s =
+        scoreSegmentation(rooms.labels(), groundTruthRoomLabels(grid, *world));
+    extra["ground_truth_score"] = {{"rooms", s.ground_truth_rooms},
+                                   {"segments", s.segments},
+                                   {"recall", s.recall},
+                                   {"precision", s.precision},
+                                   {"pooled_recall", s.pooled_recall},
+                                   {"pooled_precision", s.pooled_precision},
                                    {"iou", s.iou}};
     summary["semantic"]["ground_truth_score"] = extra["ground_truth_score"];
   }

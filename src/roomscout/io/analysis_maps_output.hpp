@@ -20,8 +20,8 @@ cv::Mat groundTruthRoomLabels(const OccupancyGrid& grid, const sim::WorldModel& 
 /// atomically. Returns a summary for metrics.json's "maps": counts, and for a world (may be
 /// null, as on a robot) with rooms the segmentation's score against them (also stored in
 /// semantic.json as "ground_truth_score").
-nlohmann::json writeAnalysisMaps(const std::filesystem::path& directory, const AnalysisMap& semantic,
-                                 const AnalysisMap& topological, const OccupancyGrid& grid,
-                                 const sim::WorldModel* world);
+nlohmann::json writeAnalysisMaps(const std::filesystem::path& directory,
+                                 const AnalysisMap& semantic, const AnalysisMap& topological,
+                                 const OccupancyGrid& grid, const sim::WorldModel* world);
 
 }  // namespace roomscout::io

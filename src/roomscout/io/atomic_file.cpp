@@ -136,7 +136,8 @@ bool ensureWritableDirectory(const std::filesystem::path& directory) {
     }
   } else {
     created = std::filesystem::create_directories(directory, ec);
-    if (!created && ec) throw InputError(directory.string(), "cannot create directory: " + ec.message());
+    if (!created && ec)
+      throw InputError(directory.string(), "cannot create directory: " + ec.message());
   }
   const std::filesystem::path probe = directory / (".roomscout_probe." + uniqueSuffix());
   const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
@@ -148,7 +149,8 @@ bool ensureWritableDirectory(const std::filesystem::path& directory) {
   return created;
 }
 
-OutputDirectory::OutputDirectory(std::filesystem::path directory) : directory_(std::move(directory)) {
+OutputDirectory::OutputDirectory(std::filesystem::path directory)
+    : directory_(std::move(directory)) {
   created_ = ensureWritableDirectory(directory_);
 }
 

@@ -18,20 +18,25 @@ PcdFormat parsePcdFormat(std::string_view name) {
   if (name == "ascii") return PcdFormat::kAscii;
   if (name == "binary") return PcdFormat::kBinary;
   if (name == "binary_compressed") return PcdFormat::kBinaryCompressed;
-  throw OptionError("unknown PCD format '" + std::string(name) + "' (known: ascii, binary, binary_compressed)");
+  throw OptionError("unknown PCD format '" + std::string(name) +
+                    "' (known: ascii, binary, binary_compressed)");
 }
 
 std::string_view pcdFormatName(PcdFormat format) {
   switch (format) {
-    case PcdFormat::kAscii: return "ascii";
-    case PcdFormat::kBinary: return "binary";
-    case PcdFormat::kBinaryCompressed: return "binary_compressed";
+    case PcdFormat::kAscii:
+      return "ascii";
+    case PcdFormat::kBinary:
+      return "binary";
+    case PcdFormat::kBinaryCompressed:
+      return "binary_compressed";
   }
   return "binary";
 }
 
-void writePcdAtomic(const std::filesystem::path& path, const std::vector<Eigen::Vector3f>& points_map,
-                    PcdFormat format, std::string_view comment, double precision_m) {
+void writePcdAtomic(const std::filesystem::path& path,
+                    const std::vector<Eigen::Vector3f>& points_map, PcdFormat format,
+                    std::string_view comment, double precision_m) {
   if (!(precision_m >= 0.0)) throw InvalidArgument("writePcdAtomic: precision_m must be >= 0");
   pcl::PointCloud<pcl::PointXYZ> cloud;
   cloud.resize(points_map.size());
@@ -74,9 +79,15 @@ void writePcdAtomic(const std::filesystem::path& path, const std::vector<Eigen::
   int status = -1;
   try {
     switch (format) {
-      case PcdFormat::kAscii: status = writer.writeASCII(temp.string(), cloud, 8); break;
-      case PcdFormat::kBinary: status = writer.writeBinary(temp.string(), cloud); break;
-      case PcdFormat::kBinaryCompressed: status = writer.writeBinaryCompressed(temp.string(), cloud); break;
+      case PcdFormat::kAscii:
+        status = writer.writeASCII(temp.string(), cloud, 8);
+        break;
+      case PcdFormat::kBinary:
+        status = writer.writeBinary(temp.string(), cloud);
+        break;
+      case PcdFormat::kBinaryCompressed:
+        status = writer.writeBinaryCompressed(temp.string(), cloud);
+        break;
     }
   } catch (const std::exception& e) {
     throw InputError(path.string(), std::string("cannot write: ") + e.what());
@@ -105,13 +116,16 @@ std::vector<Eigen::Vector3f> readPcd(const std::filesystem::path& path) {
     unsigned int data_idx = 0;
     Eigen::Vector4f origin;
     Eigen::Quaternionf orientation;
-    if (reader.readHeader(path.string(), header, origin, orientation, version, data_type, data_idx) != 0) {
+    if (reader.readHeader(path.string(), header, origin, orientation, version, data_type,
+                          data_idx) != 0) {
       throw InputError(path.string(), "cannot read PCD: bad header");
     }
     int xyz = 0;
-    for (const pcl::PCLPointField& f : header.fields) xyz += f.name == "x" || f.name == "y" || f.name == "z";
+    for (const pcl::PCLPointField& f : header.fields)
+      xyz += f.name == "x" || f.name == "y" || f.name == "z";
     if (xyz != 3) throw InputError(path.string(), "cannot read PCD: no x y z fields");
-    if (header.width * header.height == 0) return {};  // PCL's reader crashes on an empty binary body
+    if (header.width * header.height == 0)
+      return {};  // PCL's reader crashes on an empty binary body
     status = reader.read(path.string(), cloud);
   } catch (const InputError&) {
     throw;
@@ -120,7 +134,8 @@ std::vector<Eigen::Vector3f> readPcd(const std::filesystem::path& path) {
   }
   if (status != 0) throw InputError(path.string(), "cannot read PCD: PCL's reader failed");
   std::vector<Eigen::Vector3f> points(cloud.size());
-  for (std::size_t i = 0; i < cloud.size(); ++i) points[i] = Eigen::Vector3f(cloud[i].x, cloud[i].y, cloud[i].z);
+  for (std::size_t i = 0; i < cloud.size(); ++i)
+    points[i] = Eigen::Vector3f(cloud[i].x, cloud[i].y, cloud[i].z);
   return points;
 }
 

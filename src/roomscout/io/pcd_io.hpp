@@ -21,13 +21,14 @@ std::string_view pcdFormatName(PcdFormat format);
 /// same directory, a `# comment` line (newlines replaced by spaces) is added after the
 /// format line, and the result replaces `path` by rename. VIEWPOINT is the identity (the
 /// map frame). An empty cloud is written as ASCII whatever `format` says (PCL's binary
-/// readers fail on an empty body). With precision_m > 0 the coordinates are rounded to multiples of it
-/// and the points sorted by x, then y, then z: far smaller binary_compressed files (PCL's LZF
+/// readers fail on an empty body). With precision_m > 0 the coordinates are rounded to multiples of
+/// it and the points sorted by x, then y, then z: far smaller binary_compressed files (PCL's LZF
 /// then finds repeated bytes), at an error of at most precision_m / 2 per axis.
 /// Throws InputError naming the path when it cannot be written, InvalidArgument for a
 /// negative precision.
-void writePcdAtomic(const std::filesystem::path& path, const std::vector<Eigen::Vector3f>& points_map,
-                    PcdFormat format, std::string_view comment = {}, double precision_m = 0.0);
+void writePcdAtomic(const std::filesystem::path& path,
+                    const std::vector<Eigen::Vector3f>& points_map, PcdFormat format,
+                    std::string_view comment = {}, double precision_m = 0.0);
 
 /// Reads the x y z fields of a PCD file with PCL. Throws InputError naming the path when it is
 /// missing or PCL cannot parse it.

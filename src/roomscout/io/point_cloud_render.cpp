@@ -11,8 +11,9 @@ namespace roomscout::io {
 namespace {
 
 /// One orthographic panel: image axes right/up and depth along `view` (smaller = nearer).
-cv::Mat renderPanel(const std::vector<Eigen::Vector3f>& points, const Eigen::Vector3f& right, const Eigen::Vector3f& up,
-                    const Eigen::Vector3f& view, float z_lo, float z_hi, int px, const char* label) {
+cv::Mat renderPanel(const std::vector<Eigen::Vector3f>& points, const Eigen::Vector3f& right,
+                    const Eigen::Vector3f& up, const Eigen::Vector3f& view, float z_lo, float z_hi,
+                    int px, const char* label) {
   cv::Mat image(px, px, CV_8UC3, cv::Scalar(255, 255, 255));
   if (!points.empty()) {
     float u_lo = std::numeric_limits<float>::infinity(), u_hi = -u_lo, v_lo = u_lo, v_hi = -u_lo;
@@ -43,13 +44,15 @@ cv::Mat renderPanel(const std::vector<Eigen::Vector3f>& points, const Eigen::Vec
       image.at<cv::Vec3b>(row, col) = colours.at<cv::Vec3b>(0, level);
     }
   }
-  cv::putText(image, label, cv::Point(10, 28), cv::FONT_HERSHEY_SIMPLEX, 0.8, cv::Scalar(0, 0, 0), 2);
+  cv::putText(image, label, cv::Point(10, 28), cv::FONT_HERSHEY_SIMPLEX, 0.8, cv::Scalar(0, 0, 0),
+              2);
   return image;
 }
 
 }  // namespace
 
-cv::Mat renderPointCloud(const std::vector<Eigen::Vector3f>& points_map, double clip_z_m, int panel_px) {
+cv::Mat renderPointCloud(const std::vector<Eigen::Vector3f>& points_map, double clip_z_m,
+                         int panel_px) {
   std::vector<Eigen::Vector3f> kept;
   kept.reserve(points_map.size());
   float z_lo = std::numeric_limits<float>::infinity(), z_hi = -z_lo;
@@ -59,11 +62,13 @@ cv::Mat renderPointCloud(const std::vector<Eigen::Vector3f>& points_map, double 
     z_lo = std::min(z_lo, p.z());
     z_hi = std::max(z_hi, p.z());
   }
-  const cv::Mat top = renderPanel(kept, Eigen::Vector3f::UnitX(), Eigen::Vector3f::UnitY(), -Eigen::Vector3f::UnitZ(),
-                                  z_lo, z_hi, panel_px, "top");
-  const float az = static_cast<float>(-60.0 * M_PI / 180.0), el = static_cast<float>(35.0 * M_PI / 180.0);
+  const cv::Mat top = renderPanel(kept, Eigen::Vector3f::UnitX(), Eigen::Vector3f::UnitY(),
+                                  -Eigen::Vector3f::UnitZ(), z_lo, z_hi, panel_px, "top");
+  const float az = static_cast<float>(-60.0 * M_PI / 180.0),
+              el = static_cast<float>(35.0 * M_PI / 180.0);
   // Camera on the side of azimuth `az`, elevation `el`, looking at the cloud.
-  const Eigen::Vector3f view = -Eigen::Vector3f(std::cos(el) * std::cos(az), std::cos(el) * std::sin(az), std::sin(el));
+  const Eigen::Vector3f view =
+      -Eigen::Vector3f(std::cos(el) * std::cos(az), std::cos(el) * std::sin(az), std::sin(el));
   const Eigen::Vector3f right = view.cross(Eigen::Vector3f::UnitZ()).normalized();
   const Eigen::Vector3f up = right.cross(view);
   const cv::Mat oblique = renderPanel(kept, right, up, view, z_lo, z_hi, panel_px, "oblique");

@@ -14,6 +14,7 @@ namespace roomscout::io {
 /// straight down (x right, y up) and from 35 degrees above the horizon at azimuth -60 degrees.
 /// Points above clip_z_m are left out so the ceiling does not hide the rooms. Colour runs
 /// from blue (lowest point drawn) to red (highest). An empty cloud gives blank panels.
-cv::Mat renderPointCloud(const std::vector<Eigen::Vector3f>& points_map, double clip_z_m, int panel_px = 900);
+cv::Mat renderPointCloud(const std::vector<Eigen::Vector3f>& points_map, double clip_z_m,
+                         int panel_px = 900);
 
 }  // namespace roomscout::io

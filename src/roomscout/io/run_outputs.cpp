@@ -23,14 +23,16 @@ nlohmann::json timing(const sim::TimingStats& s) {
 std::string trajectoryCsv(const sim::EpisodeResult& result) {
   // With SLAM, the estimated pose follows the true one on each line.
   const bool slam = result.slam.has_value();
-  std::string out = slam ? "time_s,x_m,y_m,yaw_rad,est_x_m,est_y_m,est_yaw_rad\n" : "time_s,x_m,y_m,yaw_rad\n";
+  std::string out =
+      slam ? "time_s,x_m,y_m,yaw_rad,est_x_m,est_y_m,est_yaw_rad\n" : "time_s,x_m,y_m,yaw_rad\n";
   char line[192];
   for (const sim::TrajectorySample& s : result.trajectory) {
     if (slam) {
-      std::snprintf(line, sizeof line, "%.2f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f\n", s.time_s, s.pose.x_m, s.pose.y_m,
-                    s.pose.yaw_rad, s.estimate.x_m, s.estimate.y_m, s.estimate.yaw_rad);
+      std::snprintf(line, sizeof line, "%.2f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f\n", s.time_s, s.pose.x_m,
+                    s.pose.y_m, s.pose.yaw_rad, s.estimate.x_m, s.estimate.y_m, s.estimate.yaw_rad);
     } else {
-      std::snprintf(line, sizeof line, "%.2f,%.4f,%.4f,%.4f\n", s.time_s, s.pose.x_m, s.pose.y_m, s.pose.yaw_rad);
+      std::snprintf(line, sizeof line, "%.2f,%.4f,%.4f,%.4f\n", s.time_s, s.pose.x_m, s.pose.y_m,
+                    s.pose.yaw_rad);
     }
     out += line;
   }
@@ -64,7 +66,8 @@ nlohmann::json metricsJson(const RunInfo& info, const sim::EpisodeResult& r) {
       {"reachable_area_m2", r.reachable_area_m2},
       // null without ground-truth rooms, so that reports show no count instead of a zero.
       {"revisits", r.room_truth ? nlohmann::json(r.revisits) : nlohmann::json(nullptr)},
-      {"revisits_98", r.room_truth && r.revisits98 ? nlohmann::json(*r.revisits98) : nlohmann::json(nullptr)},
+      {"revisits_98",
+       r.room_truth && r.revisits98 ? nlohmann::json(*r.revisits98) : nlohmann::json(nullptr)},
       {"rooms_entered", r.room_truth ? nlohmann::json(r.rooms_entered) : nlohmann::json(nullptr)},
       {"goals", r.goals},
       {"goal_failures", r.goal_failures},

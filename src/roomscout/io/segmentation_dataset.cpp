@@ -27,7 +27,8 @@ std::vector<SegmentationDatasetMap> listSegmentationDataset(const fs::path& dire
     maps.push_back(std::move(m));
   }
   if (maps.empty()) {
-    throw InputError(directory.string(), "no benchmark maps (NAME.png with NAME_gt_segmentation.png beside it)");
+    throw InputError(directory.string(),
+                     "no benchmark maps (NAME.png with NAME_gt_segmentation.png beside it)");
   }
   std::sort(maps.begin(), maps.end(), [](const auto& a, const auto& b) { return a.name < b.name; });
   return maps;

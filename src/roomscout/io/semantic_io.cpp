@@ -65,7 +65,8 @@ cv::Mat semanticLabelImage(const SemanticMap& map) {
   for (int y = 0; y < labels.rows; ++y) {
     const int* in = labels.ptr<int>(y);
     auto* out = image.ptr<std::uint16_t>(labels.rows - 1 - y);
-    for (int x = 0; x < labels.cols; ++x) out[x] = static_cast<std::uint16_t>(std::clamp(in[x], 0, 65535));
+    for (int x = 0; x < labels.cols; ++x)
+      out[x] = static_cast<std::uint16_t>(std::clamp(in[x], 0, 65535));
   }
   return image;
 }
@@ -94,8 +95,9 @@ cv::Mat renderSemantic(const SemanticMap& map, const OccupancyGrid& grid) {
   cv::resize(image, image, {}, scale, scale, cv::INTER_NEAREST);
   for (const SemanticRegion& r : map.regions()) {
     auto toPixel = [&](const Vec2& p) {
-      return cv::Point(static_cast<int>((p.x() - g.origin_m().x()) / g.resolution_m() * scale),
-                       static_cast<int>((g.height() - (p.y() - g.origin_m().y()) / g.resolution_m()) * scale));
+      return cv::Point(
+          static_cast<int>((p.x() - g.origin_m().x()) / g.resolution_m() * scale),
+          static_cast<int>((g.height() - (p.y() - g.origin_m().y()) / g.resolution_m()) * scale));
     };
     if (r.open && r.polygon_m.size() >= 3) {
       std::vector<cv::Point> poly;
@@ -107,13 +109,14 @@ cv::Mat renderSemantic(const SemanticMap& map, const OccupancyGrid& grid) {
     int base = 0;
     const cv::Size size = cv::getTextSize(text, cv::FONT_HERSHEY_SIMPLEX, font, 1, &base);
     const cv::Point c = toPixel(r.centroid_m) - cv::Point(size.width / 2, -size.height / 2);
-    cv::putText(image, text, c, cv::FONT_HERSHEY_SIMPLEX, font, cv::Scalar(30, 30, 30), 1, cv::LINE_AA);
+    cv::putText(image, text, c, cv::FONT_HERSHEY_SIMPLEX, font, cv::Scalar(30, 30, 30), 1,
+                cv::LINE_AA);
   }
   return image;
 }
 
-void writeSemanticMap(const std::filesystem::path& directory, const SemanticMap& map, const OccupancyGrid& grid,
-                      const nlohmann::json& extra) {
+void writeSemanticMap(const std::filesystem::path& directory, const SemanticMap& map,
+                      const OccupancyGrid& grid, const nlohmann::json& extra) {
   writeImageAtomic(directory / "semantic_labels.png", semanticLabelImage(map));
   writeImageAtomic(directory / "semantic.png", renderSemantic(map, grid));
   nlohmann::json j = semanticJson(map);

@@ -30,7 +30,8 @@ cv::Mat renderSemantic(const SemanticMap& map, const OccupancyGrid& grid);
 
 /// Writes semantic.json, semantic.png and semantic_labels.png into `directory`, atomically.
 /// `extra` members (e.g. a ground-truth score) are merged into semantic.json's top level.
-void writeSemanticMap(const std::filesystem::path& directory, const SemanticMap& map, const OccupancyGrid& grid,
+void writeSemanticMap(const std::filesystem::path& directory, const SemanticMap& map,
+                      const OccupancyGrid& grid,
                       const nlohmann::json& extra = nlohmann::json::object());
 
 /// Occupancy grid as a greyscale image, row 0 at the top: free 254, occupied 0, unknown 205.

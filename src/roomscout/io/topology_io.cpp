@@ -45,8 +45,9 @@ cv::Mat renderTopology(const TopologicalMap& map, const OccupancyGrid& grid) {
   cv::cvtColor(occupancyImage(grid), image, cv::COLOR_GRAY2BGR);
   cv::resize(image, image, {}, scale, scale, cv::INTER_NEAREST);
   auto toPixel = [&](const Vec2& p) {
-    return cv::Point(static_cast<int>((p.x() - g.origin_m().x()) / g.resolution_m() * scale),
-                     static_cast<int>((g.height() - (p.y() - g.origin_m().y()) / g.resolution_m()) * scale));
+    return cv::Point(
+        static_cast<int>((p.x() - g.origin_m().x()) / g.resolution_m() * scale),
+        static_cast<int>((g.height() - (p.y() - g.origin_m().y()) / g.resolution_m()) * scale));
   };
   for (const TopoEdge& e : map.edges()) {
     std::vector<cv::Point> line;
@@ -54,7 +55,7 @@ cv::Mat renderTopology(const TopologicalMap& map, const OccupancyGrid& grid) {
     cv::polylines(image, line, false, cv::Scalar(200, 90, 20), std::max(1, scale / 2), cv::LINE_AA);
   }
   for (const TopoNode& n : map.nodes()) {
-    const cv::Scalar colour = n.kind == TopoNodeKind::kJunction  ? cv::Scalar(40, 40, 220)
+    const cv::Scalar colour = n.kind == TopoNodeKind::kJunction   ? cv::Scalar(40, 40, 220)
                               : n.kind == TopoNodeKind::kFrontier ? cv::Scalar(0, 150, 255)
                                                                   : cv::Scalar(40, 170, 40);
     cv::circle(image, toPixel(n.position_m), 2 + scale, colour, cv::FILLED, cv::LINE_AA);

@@ -19,7 +19,8 @@ std::vector<ParameterRef> KeyframeOptions::parameters() {
       {"every_scan", &every_scan, "insert every scan instead of keyframes only"},
       {"distance_m", &distance_m, "translation that makes a new keyframe [m]"},
       {"angle_rad", &angle_rad, "rotation that makes a new keyframe [rad]"},
-      {"turn_min_move_m", &turn_min_move_m, "translation a rotation keyframe also needs [m]; 0: LIO-SAM's rule"},
+      {"turn_min_move_m", &turn_min_move_m,
+       "translation a rotation keyframe also needs [m]; 0: LIO-SAM's rule"},
   };
 }
 
@@ -27,22 +28,28 @@ std::string KeyframeOptions::describe() const {
   if (every_scan) return "keyframes: every scan";
   char buf[128];
   if (turn_min_move_m == 0.0) {
-    std::snprintf(buf, sizeof buf, "keyframes: every %g m or %g rad (LIO-SAM rule)", distance_m, angle_rad);
+    std::snprintf(buf, sizeof buf, "keyframes: every %g m or %g rad (LIO-SAM rule)", distance_m,
+                  angle_rad);
   } else {
-    std::snprintf(buf, sizeof buf, "keyframes: every %g m, or %g rad after %g m (LIO-SAM rule, no turns on the spot)",
-                  distance_m, angle_rad, turn_min_move_m);
+    std::snprintf(
+        buf, sizeof buf,
+        "keyframes: every %g m, or %g rad after %g m (LIO-SAM rule, no turns on the spot)",
+        distance_m, angle_rad, turn_min_move_m);
   }
   return buf;
 }
 
-KeyframeSelector::KeyframeSelector(const KeyframeOptions& options) : options_(options) { options_.validate(); }
+KeyframeSelector::KeyframeSelector(const KeyframeOptions& options) : options_(options) {
+  options_.validate();
+}
 
 bool KeyframeSelector::accept(const Pose2& T_map_robot) {
   bool key = options_.every_scan || !last_;
   if (!key) {
     const double moved = (T_map_robot.position() - last_->position()).norm();
     const double turned = std::abs(wrapAngle(T_map_robot.yaw_rad - last_->yaw_rad));
-    key = moved >= options_.distance_m || (turned >= options_.angle_rad && moved >= options_.turn_min_move_m);
+    key = moved >= options_.distance_m ||
+          (turned >= options_.angle_rad && moved >= options_.turn_min_move_m);
   }
   if (key) {
     last_ = T_map_robot;

@@ -15,8 +15,8 @@ constexpr std::int64_t kBias = std::int64_t{1} << (kBits - 1);
 constexpr std::uint64_t kFieldMask = (std::uint64_t{1} << kBits) - 1;
 
 std::uint64_t pack(std::int64_t x, std::int64_t y, std::int64_t z) {
-  return (static_cast<std::uint64_t>(x + kBias) << (2 * kBits)) | (static_cast<std::uint64_t>(y + kBias) << kBits) |
-         static_cast<std::uint64_t>(z + kBias);
+  return (static_cast<std::uint64_t>(x + kBias) << (2 * kBits)) |
+         (static_cast<std::uint64_t>(y + kBias) << kBits) | static_cast<std::uint64_t>(z + kBias);
 }
 
 Eigen::Vector3f voxelCentre(std::uint64_t key, float voxel) {
@@ -86,7 +86,8 @@ std::size_t PointCloudMap::insert(const std::vector<Eigen::Vector3f>& points_map
       keys[i] = kEmpty;
       continue;
     }
-    keys[i] = pack(static_cast<std::int64_t>(std::floor(q.x())), static_cast<std::int64_t>(std::floor(q.y())),
+    keys[i] = pack(static_cast<std::int64_t>(std::floor(q.x())),
+                   static_cast<std::int64_t>(std::floor(q.y())),
                    static_cast<std::int64_t>(std::floor(q.z())));
   }
   // Consecutive points of a revolution often share a voxel (neighbouring beams of one ring):
@@ -146,7 +147,8 @@ std::vector<Eigen::Vector3f> PointCloudMap::points() const {
   std::vector<Eigen::Vector3f> out(voxels_.size());
   const float voxel = static_cast<float>(options_.voxel_size_m);
   for (std::size_t v = 0; v < voxels_.size(); ++v) {
-    out[v] = voxelCentre(voxel_keys_[v], voxel) + voxels_[v].sum / static_cast<float>(voxels_[v].count);
+    out[v] =
+        voxelCentre(voxel_keys_[v], voxel) + voxels_[v].sum / static_cast<float>(voxels_[v].count);
   }
   return out;
 }

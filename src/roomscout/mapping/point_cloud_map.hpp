@@ -67,7 +67,7 @@ class PointCloudMap {
 
   PointCloudMapOptions options_;
   float inv_voxel_ = 20.0f;
-  std::vector<Slot> slots_;                ///< open-addressing hash, linear probing
+  std::vector<Slot> slots_;  ///< open-addressing hash, linear probing
   std::size_t mask_ = 0;
   std::vector<Voxel> voxels_;              ///< in creation order
   std::vector<std::uint64_t> voxel_keys_;  ///< per voxel: its packed index

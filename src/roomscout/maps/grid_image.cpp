@@ -20,7 +20,9 @@ void stateImage(const OccupancyGrid& grid, cv::Mat& image) { stateView(grid).cop
 
 std::size_t knownCellCount(const OccupancyGrid& grid) {
   // Unknown is 0, free and occupied are not.
-  return grid.geometry().cellCount() == 0 ? 0 : static_cast<std::size_t>(cv::countNonZero(stateView(grid)));
+  return grid.geometry().cellCount() == 0
+             ? 0
+             : static_cast<std::size_t>(cv::countNonZero(stateView(grid)));
 }
 
 cv::Rect knownBounds(const cv::Mat& states, int margin) {
@@ -41,11 +43,13 @@ cv::Mat fillableFreeSpace(const cv::Mat& states, int max_blob_area_px, int max_b
   // Components of everything not free: a blob of furniture seen from all sides, or a cabinet
   // whose inside was never seen (an occupied rim around unknown cells). A wall seen only in
   // part joins the large unknown outside and is never small.
-  const RunComponents blobs = runComponents(states, 8, [kFree](std::uint8_t v) { return v != kFree; });
+  const RunComponents blobs =
+      runComponents(states, 8, [kFree](std::uint8_t v) { return v != kFree; });
   std::vector<std::uint8_t> candidate(blobs.components.size(), 0);
   for (std::size_t i = 0; i < blobs.components.size(); ++i) {
     const RunComponent& c = blobs.components[i];
-    const bool touches_border = c.min_x == 0 || c.min_y == 0 || c.max_x == states.cols - 1 || c.max_y == states.rows - 1;
+    const bool touches_border =
+        c.min_x == 0 || c.min_y == 0 || c.max_x == states.cols - 1 || c.max_y == states.rows - 1;
     candidate[i] = !touches_border && c.area <= max_blob_area_px &&
                    std::max(c.max_x - c.min_x + 1, c.max_y - c.min_y + 1) <= max_blob_extent_px;
   }

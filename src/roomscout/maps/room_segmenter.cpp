@@ -69,8 +69,8 @@ Scratch& scratch() {
 /// straight obstacle at least `jamb` cells long with space on both of its faces within
 /// `thick` cells) is a door in that wall. Clears the cut cells in `cut_space` (a copy of
 /// `space`); `space` has a frame.
-void cutDoors(const cv::Mat& space, cv::Mat& cut_space, int min_gap, int max_gap, int max_extension, int jamb,
-              int thick) {
+void cutDoors(const cv::Mat& space, cv::Mat& cut_space, int min_gap, int max_gap, int max_extension,
+              int jamb, int thick) {
   if (max_gap <= 0 && max_extension <= 0) return;
   const int w = space.cols, h = space.rows;
   const std::uint8_t* sp = space.ptr<std::uint8_t>(0);
@@ -119,23 +119,26 @@ void cutDoors(const cv::Mat& space, cv::Mat& cut_space, int min_gap, int max_gap
 
 /// The segmentation of `states` (the known part of a map) into `labels` (CV_32S, zeros, same
 /// size); returns the number of rooms.
-int segmentKnown(const RoomSegmenterOptions& options, const cv::Mat& states, double resolution_m, cv::Mat& labels) {
+int segmentKnown(const RoomSegmenterOptions& options, const cv::Mat& states, double resolution_m,
+                 cv::Mat& labels) {
   Scratch& s = scratch();
   const double cell_area = resolution_m * resolution_m;
   // A one-cell frame of non-space lets the loops below skip bounds checks.
-  cv::copyMakeBorder(maps::fillableFreeSpace(states, static_cast<int>(options.furniture_max_area_m2 / cell_area),
-                                             static_cast<int>(std::ceil(options.furniture_max_extent_m / resolution_m))),
-                     s.space, 1, 1, 1, 1, cv::BORDER_CONSTANT, 0);
+  cv::copyMakeBorder(
+      maps::fillableFreeSpace(
+          states, static_cast<int>(options.furniture_max_area_m2 / cell_area),
+          static_cast<int>(std::ceil(options.furniture_max_extent_m / resolution_m))),
+      s.space, 1, 1, 1, 1, cv::BORDER_CONSTANT, 0);
   const cv::Mat& space = s.space;
   // Doors found as gaps in straight walls are cut before the cores are sought.
   space.copyTo(s.cut_space);
-  cutDoors(space, s.cut_space, static_cast<int>(std::lround(options.door_cut_min_width_m / resolution_m)),
+  cutDoors(space, s.cut_space,
+           static_cast<int>(std::lround(options.door_cut_min_width_m / resolution_m)),
            static_cast<int>(std::lround(options.door_cut_max_width_m / resolution_m)),
            static_cast<int>(std::lround(options.wall_extension_max_m / resolution_m)),
            std::max(1, static_cast<int>(std::lround(options.jamb_min_length_m / resolution_m))),
            std::max(1, static_cast<int>(std::lround(options.wall_max_thickness_m / resolution_m))));
   cv::distanceTransform(s.cut_space, s.dist, cv::DIST_L2, cv::DIST_MASK_PRECISE, CV_32F);
-
 
   const int w = space.cols;
   const int n = space.rows * space.cols;
@@ -231,7 +234,8 @@ int segmentKnown(const RoomSegmenterOptions& options, const cv::Mat& states, dou
   }
   for (const int p : order) {
     const SweepRoot& rp = root[p];
-    if (parent[p] == p && !rp.core() && rp.area >= min_isolated_cells) cores.push_back({rp.peak_cell, -1});
+    if (parent[p] == p && !rp.core() && rp.area >= min_isolated_cells)
+      cores.push_back({rp.peak_cell, -1});
   }
   for (const int p : order) parent[p] = -1;
 
@@ -302,7 +306,8 @@ int segmentKnown(const RoomSegmenterOptions& options, const cv::Mat& states, dou
   };
   std::vector<int> by_area(count);
   std::iota(by_area.begin(), by_area.end(), 1);
-  std::stable_sort(by_area.begin(), by_area.end(), [&](int a, int b) { return seg_area[a] < seg_area[b]; });
+  std::stable_sort(by_area.begin(), by_area.end(),
+                   [&](int a, int b) { return seg_area[a] < seg_area[b]; });
   for (const int seg : by_area) {
     if (rep(seg) != seg || seg_area[seg] >= min_room_cells) continue;
     int best = 0, best_len = 0;
@@ -355,39 +360,57 @@ int segmentKnown(const RoomSegmenterOptions& options, const cv::Mat& states, dou
 }  // namespace
 
 void RoomSegmenterOptions::validate() const {
-  if (!(furniture_max_area_m2 >= 0.0)) throw OptionError("segmentation.furniture_max_area_m2 must be >= 0");
-  if (!(furniture_max_extent_m >= 0.0)) throw OptionError("segmentation.furniture_max_extent_m must be >= 0");
+  if (!(furniture_max_area_m2 >= 0.0))
+    throw OptionError("segmentation.furniture_max_area_m2 must be >= 0");
+  if (!(furniture_max_extent_m >= 0.0))
+    throw OptionError("segmentation.furniture_max_extent_m must be >= 0");
   if (!(door_cut_min_width_m >= 0.0 && door_cut_max_width_m >= 0.0)) {
     throw OptionError("segmentation.door_cut_min_width_m and door_cut_max_width_m must be >= 0");
   }
-  if (!(wall_extension_max_m >= 0.0)) throw OptionError("segmentation.wall_extension_max_m must be >= 0");
+  if (!(wall_extension_max_m >= 0.0))
+    throw OptionError("segmentation.wall_extension_max_m must be >= 0");
   if (!(jamb_min_length_m > 0.0)) throw OptionError("segmentation.jamb_min_length_m must be > 0");
-  if (!(wall_max_thickness_m > 0.0)) throw OptionError("segmentation.wall_max_thickness_m must be > 0");
+  if (!(wall_max_thickness_m > 0.0))
+    throw OptionError("segmentation.wall_max_thickness_m must be > 0");
   if (!(door_max_width_m > 0.0)) throw OptionError("segmentation.door_max_width_m must be > 0");
-  if (!(neck_ratio > 0.0 && neck_ratio < 1.0)) throw OptionError("segmentation.neck_ratio must be in (0, 1)");
-  if (!(min_core_clearance_m >= 0.0)) throw OptionError("segmentation.min_core_clearance_m must be >= 0");
+  if (!(neck_ratio > 0.0 && neck_ratio < 1.0))
+    throw OptionError("segmentation.neck_ratio must be in (0, 1)");
+  if (!(min_core_clearance_m >= 0.0))
+    throw OptionError("segmentation.min_core_clearance_m must be >= 0");
   if (!(min_room_area_m2 >= 0.0)) throw OptionError("segmentation.min_room_area_m2 must be >= 0");
-  if (!(min_isolated_area_m2 >= 0.0)) throw OptionError("segmentation.min_isolated_area_m2 must be >= 0");
+  if (!(min_isolated_area_m2 >= 0.0))
+    throw OptionError("segmentation.min_isolated_area_m2 must be >= 0");
 }
 
 std::vector<ParameterRef> RoomSegmenterOptions::parameters() {
   return {
-      {"furniture_max_area_m2", &furniture_max_area_m2, "enclosed obstacle blobs up to this area are filled [m^2]"},
-      {"furniture_max_extent_m", &furniture_max_extent_m, "... and up to this bounding-box side [m]"},
-      {"door_cut_min_width_m", &door_cut_min_width_m, "gaps in straight walls at least this wide ... [m]"},
-      {"door_cut_max_width_m", &door_cut_max_width_m, "... and at most this wide are doors, cut first (0: off) [m]"},
-      {"wall_extension_max_m", &wall_extension_max_m, "a wall end is extended across gaps up to this long (0: off) [m]"},
-      {"jamb_min_length_m", &jamb_min_length_m, "a wall end counts as a door jamb when this long [m]"},
+      {"furniture_max_area_m2", &furniture_max_area_m2,
+       "enclosed obstacle blobs up to this area are filled [m^2]"},
+      {"furniture_max_extent_m", &furniture_max_extent_m,
+       "... and up to this bounding-box side [m]"},
+      {"door_cut_min_width_m", &door_cut_min_width_m,
+       "gaps in straight walls at least this wide ... [m]"},
+      {"door_cut_max_width_m", &door_cut_max_width_m,
+       "... and at most this wide are doors, cut first (0: off) [m]"},
+      {"wall_extension_max_m", &wall_extension_max_m,
+       "a wall end is extended across gaps up to this long (0: off) [m]"},
+      {"jamb_min_length_m", &jamb_min_length_m,
+       "a wall end counts as a door jamb when this long [m]"},
       {"wall_max_thickness_m", &wall_max_thickness_m, "... and at most this thick [m]"},
       {"door_max_width_m", &door_max_width_m, "necks wider than this never separate rooms [m]"},
-      {"neck_ratio", &neck_ratio, "a neck separates cores when its half-width <= ratio * both cores' clearance"},
-      {"min_core_clearance_m", &min_core_clearance_m, "a room core is at least this far from walls [m]"},
+      {"neck_ratio", &neck_ratio,
+       "a neck separates cores when its half-width <= ratio * both cores' clearance"},
+      {"min_core_clearance_m", &min_core_clearance_m,
+       "a room core is at least this far from walls [m]"},
       {"min_room_area_m2", &min_room_area_m2, "smaller segments merge into a neighbour [m^2]"},
-      {"min_isolated_area_m2", &min_isolated_area_m2, "smaller free patches without neighbours are no room [m^2]"},
+      {"min_isolated_area_m2", &min_isolated_area_m2,
+       "smaller free patches without neighbours are no room [m^2]"},
   };
 }
 
-RoomSegmenter::RoomSegmenter(const RoomSegmenterOptions& options) : options_(options) { options_.validate(); }
+RoomSegmenter::RoomSegmenter(const RoomSegmenterOptions& options) : options_(options) {
+  options_.validate();
+}
 
 RoomSegmentation RoomSegmenter::segment(const OccupancyGrid& grid) const {
   return segment(maps::stateView(grid), grid.geometry().resolution_m());

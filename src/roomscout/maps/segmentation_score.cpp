@@ -10,7 +10,8 @@
 namespace roomscout {
 
 cv::Mat groundTruthRooms(const cv::Mat& gt_grey, int min_region_cells) {
-  if (gt_grey.type() != CV_8U) throw InvalidArgument("groundTruthRooms: image must be CV_8U greyscale");
+  if (gt_grey.type() != CV_8U)
+    throw InvalidArgument("groundTruthRooms: image must be CV_8U greyscale");
   cv::Mat rooms = gt_grey > 250;
   cv::Mat labels, stats, centroids;
   const int n = cv::connectedComponentsWithStats(rooms, labels, stats, centroids, 8, CV_32S);
@@ -26,8 +27,10 @@ cv::Mat groundTruthRooms(const cv::Mat& gt_grey, int min_region_cells) {
   return labels;
 }
 
-SegmentationScore scoreSegmentation(const cv::Mat& segments, const cv::Mat& ground_truth, int min_region_cells) {
-  if (segments.type() != CV_32S || ground_truth.type() != CV_32S || segments.size() != ground_truth.size()) {
+SegmentationScore scoreSegmentation(const cv::Mat& segments, const cv::Mat& ground_truth,
+                                    int min_region_cells) {
+  if (segments.type() != CV_32S || ground_truth.type() != CV_32S ||
+      segments.size() != ground_truth.size()) {
     throw InvalidArgument("scoreSegmentation: expects two CV_32S label images of the same size");
   }
   std::unordered_map<int, long> seg_size, gt_size;
@@ -48,7 +51,8 @@ SegmentationScore scoreSegmentation(const cv::Mat& segments, const cv::Mat& grou
     const int* s = segments.ptr<int>(y);
     const int* g = ground_truth.ptr<int>(y);
     for (int x = 0; x < segments.cols; ++x) {
-      if (kept(seg_size, s[x]) && kept(gt_size, g[x])) ++overlap[(static_cast<long long>(s[x]) << 32) | g[x]];
+      if (kept(seg_size, s[x]) && kept(gt_size, g[x]))
+        ++overlap[(static_cast<long long>(s[x]) << 32) | g[x]];
     }
   }
   std::unordered_map<int, long> best_for_seg, best_for_gt;

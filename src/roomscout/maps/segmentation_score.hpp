@@ -14,11 +14,11 @@ namespace roomscout {
 struct SegmentationScore {
   int ground_truth_rooms = 0;
   int segments = 0;
-  double recall = 0.0;           ///< mean over rooms g of max_s |s ∩ g| / |g|
-  double precision = 0.0;        ///< mean over segments s of max_g |s ∩ g| / |s|
-  double pooled_recall = 0.0;    ///< Σ_g max_s |s ∩ g| / Σ_g |g|
-  double pooled_precision = 0.0; ///< Σ_s max_g |s ∩ g| / Σ_s |s|
-  double iou = 0.0;              ///< mean over rooms g of max_s |s ∩ g| / |s ∪ g|
+  double recall = 0.0;            ///< mean over rooms g of max_s |s ∩ g| / |g|
+  double precision = 0.0;         ///< mean over segments s of max_g |s ∩ g| / |s|
+  double pooled_recall = 0.0;     ///< Σ_g max_s |s ∩ g| / Σ_g |g|
+  double pooled_precision = 0.0;  ///< Σ_s max_g |s ∩ g| / Σ_s |s|
+  double iou = 0.0;               ///< mean over rooms g of max_s |s ∩ g| / |s ∪ g|
 };
 
 /// Ground-truth rooms from a benchmark image (grey, CV_8U): cells > 250 are room space,

@@ -19,12 +19,18 @@ std::array<std::uint8_t, 3> SemanticMap::colourOf(int id) {
   const double s = (id % 2) ? 0.55 : 0.75, v = (id % 3 == 0) ? 0.80 : 0.95;
   const double c = v * s, hp = hue / 60.0, xx = c * (1.0 - std::fabs(std::fmod(hp, 2.0) - 1.0));
   double r = 0, g = 0, b = 0;
-  if (hp < 1) std::tie(r, g, b) = std::make_tuple(c, xx, 0.0);
-  else if (hp < 2) std::tie(r, g, b) = std::make_tuple(xx, c, 0.0);
-  else if (hp < 3) std::tie(r, g, b) = std::make_tuple(0.0, c, xx);
-  else if (hp < 4) std::tie(r, g, b) = std::make_tuple(0.0, xx, c);
-  else if (hp < 5) std::tie(r, g, b) = std::make_tuple(xx, 0.0, c);
-  else std::tie(r, g, b) = std::make_tuple(c, 0.0, xx);
+  if (hp < 1)
+    std::tie(r, g, b) = std::make_tuple(c, xx, 0.0);
+  else if (hp < 2)
+    std::tie(r, g, b) = std::make_tuple(xx, c, 0.0);
+  else if (hp < 3)
+    std::tie(r, g, b) = std::make_tuple(0.0, c, xx);
+  else if (hp < 4)
+    std::tie(r, g, b) = std::make_tuple(0.0, xx, c);
+  else if (hp < 5)
+    std::tie(r, g, b) = std::make_tuple(xx, 0.0, c);
+  else
+    std::tie(r, g, b) = std::make_tuple(c, 0.0, xx);
   const double m = v - c;
   auto to8 = [&](double u) { return static_cast<std::uint8_t>(std::lround((u + m) * 255.0)); };
   return {to8(r), to8(g), to8(b)};
@@ -37,7 +43,8 @@ const SemanticRegion* SemanticMap::region(int id) const {
   return nullptr;
 }
 
-void SemanticMap::update(const GridGeometry& geometry, const cv::Mat& segment_labels, const cv::Mat& states) {
+void SemanticMap::update(const GridGeometry& geometry, const cv::Mat& segment_labels,
+                         const cv::Mat& states) {
   if (segment_labels.type() != CV_32S || segment_labels.rows != geometry.height() ||
       segment_labels.cols != geometry.width()) {
     throw InvalidArgument("SemanticMap::update: labels must be CV_32S of the geometry's size");
@@ -47,10 +54,13 @@ void SemanticMap::update(const GridGeometry& geometry, const cv::Mat& segment_la
   }
   // Old labels seen through the new geometry (same cells when the geometry is unchanged).
   int dx = 0, dy = 0;
-  const bool have_old = !labels_.empty() && std::abs(geometry_.resolution_m() - geometry.resolution_m()) < 1e-9;
+  const bool have_old =
+      !labels_.empty() && std::abs(geometry_.resolution_m() - geometry.resolution_m()) < 1e-9;
   if (have_old) {
-    dx = static_cast<int>(std::lround((geometry.origin_m().x() - geometry_.origin_m().x()) / geometry.resolution_m()));
-    dy = static_cast<int>(std::lround((geometry.origin_m().y() - geometry_.origin_m().y()) / geometry.resolution_m()));
+    dx = static_cast<int>(std::lround((geometry.origin_m().x() - geometry_.origin_m().x()) /
+                                      geometry.resolution_m()));
+    dy = static_cast<int>(std::lround((geometry.origin_m().y() - geometry_.origin_m().y()) /
+                                      geometry.resolution_m()));
   }
   // Per row, the columns [first, last] that hold room labels (first > last: none), so the
   // passes below skip the unknown part of a partial map.
@@ -68,7 +78,8 @@ void SemanticMap::update(const GridGeometry& geometry, const cv::Mat& segment_la
     for (int x = x0; x <= x1; ++x) max_new = std::max(max_new, row[x]);
   }
   const int max_old = next_id_;
-  std::vector<int> overlap(have_old ? static_cast<std::size_t>(max_new + 1) * (max_old + 1) : 0, 0);  // [new][old]
+  std::vector<int> overlap(have_old ? static_cast<std::size_t>(max_new + 1) * (max_old + 1) : 0,
+                           0);  // [new][old]
   for (int y = 0; have_old && y < rows; ++y) {
     const int* row = segment_labels.ptr<int>(y);
     const int oy = y + dy;
@@ -154,8 +165,9 @@ void SemanticMap::update(const GridGeometry& geometry, const cv::Mat& segment_la
           a.neighbours.insert(below[x]);
           acc[below[x]].neighbours.insert(id);
         }
-        front = st && ((x + 1 < cols && st[x + 1] == unknown) || (x > 0 && st[x - 1] == unknown) ||
-                       (st_above && st_above[x] == unknown) || (st_below && st_below[x] == unknown));
+        front =
+            st && ((x + 1 < cols && st[x + 1] == unknown) || (x > 0 && st[x - 1] == unknown) ||
+                   (st_above && st_above[x] == unknown) || (st_below && st_below[x] == unknown));
       }
       if (front && run_begin < 0) run_begin = x;
       if (!front && run_begin >= 0) {
@@ -205,7 +217,8 @@ void SemanticMap::update(const GridGeometry& geometry, const cv::Mat& segment_la
       }
       const cv::RotatedRect rect = cv::minAreaRect(contours[best]);
       const double long_side = std::max(rect.size.width, rect.size.height) * res;
-      const double short_side = std::max(1e-9, static_cast<double>(std::min(rect.size.width, rect.size.height)) * res);
+      const double short_side =
+          std::max(1e-9, static_cast<double>(std::min(rect.size.width, rect.size.height)) * res);
       if (long_side / short_side >= 3.0 && short_side <= 3.0) r.label = "corridor";
     }
     regions_.push_back(std::move(r));

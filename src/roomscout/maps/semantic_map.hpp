@@ -20,15 +20,15 @@ namespace roomscout {
 
 /// One room of a SemanticMap.
 struct SemanticRegion {
-  int id = 0;                               ///< >= 1, stable across updates
-  std::array<std::uint8_t, 3> rgb{};        ///< display colour, a function of the id
-  std::string label;                        ///< "room" or "corridor" (by shape)
+  int id = 0;                         ///< >= 1, stable across updates
+  std::array<std::uint8_t, 3> rgb{};  ///< display colour, a function of the id
+  std::string label;                  ///< "room" or "corridor" (by shape)
   int cell_count = 0;
   double area_m2 = 0.0;
   Vec2 centroid_m = Vec2::Zero();
-  Polygon polygon_m;                        ///< outer boundary of its largest part [m]
-  bool open = false;                        ///< touches unknown space: not fully seen yet
-  std::vector<int> neighbours;              ///< ids of rooms it shares a border (a door) with
+  Polygon polygon_m;            ///< outer boundary of its largest part [m]
+  bool open = false;            ///< touches unknown space: not fully seen yet
+  std::vector<int> neighbours;  ///< ids of rooms it shares a border (a door) with
 };
 
 /// Rooms on a grid. Not thread-safe for concurrent update() and reads. A copy is cheap (it

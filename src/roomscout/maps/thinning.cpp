@@ -54,8 +54,9 @@ cv::Mat thinZhangSuen(const cv::Mat& binary) {
     const std::uint8_t* down = mid + w;
     std::uint8_t* c = code.data() + static_cast<std::size_t>(y) * w;
     for (int x = 1; x + 1 < w; ++x) {
-      c[x] = static_cast<std::uint8_t>(up[x] | up[x + 1] << 1 | mid[x + 1] << 2 | down[x + 1] << 3 | down[x] << 4 |
-                                       down[x - 1] << 5 | mid[x - 1] << 6 | up[x - 1] << 7);
+      c[x] = static_cast<std::uint8_t>(up[x] | up[x + 1] << 1 | mid[x + 1] << 2 | down[x + 1] << 3 |
+                                       down[x] << 4 | down[x - 1] << 5 | mid[x - 1] << 6 |
+                                       up[x - 1] << 7);
     }
   }
   // A pixel's verdict in a sub-iteration depends only on its 8-neighbourhood and on the kind
@@ -94,7 +95,8 @@ cv::Mat thinZhangSuen(const cv::Mat& binary) {
     idle = 0;
     for (const int p : removed) {
       img[p] &= static_cast<std::uint8_t>(~1);
-      for (int k = 0; k < 8; ++k) code[p + off[k]] &= static_cast<std::uint8_t>(~(1u << ((k + 4) & 7)));
+      for (int k = 0; k < 8; ++k)
+        code[p + off[k]] &= static_cast<std::uint8_t>(~(1u << ((k + 4) & 7)));
     }
     for (const int p : removed) {
       for (const int o : off) {

@@ -4,9 +4,12 @@ namespace roomscout {
 
 std::string_view toString(TopoNodeKind kind) {
   switch (kind) {
-    case TopoNodeKind::kJunction: return "junction";
-    case TopoNodeKind::kEndpoint: return "endpoint";
-    case TopoNodeKind::kFrontier: return "frontier";
+    case TopoNodeKind::kJunction:
+      return "junction";
+    case TopoNodeKind::kEndpoint:
+      return "endpoint";
+    case TopoNodeKind::kFrontier:
+      return "frontier";
   }
   return "endpoint";
 }

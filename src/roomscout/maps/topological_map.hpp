@@ -19,23 +19,24 @@ struct TopoNode {
   int id = 0;
   Vec2 position_m = Vec2::Zero();
   TopoNodeKind kind = TopoNodeKind::kEndpoint;
-  int region_id = 0;          ///< room the node stands in (SemanticMap id), 0 = none
-  double clearance_m = 0.0;   ///< distance to the nearest obstacle or unknown cell [m]
+  int region_id = 0;         ///< room the node stands in (SemanticMap id), 0 = none
+  double clearance_m = 0.0;  ///< distance to the nearest obstacle or unknown cell [m]
 };
 
 struct TopoEdge {
   int id = 0;
-  int u = 0, v = 0;               ///< node ids
-  double length_m = 0.0;          ///< along the skeleton [m]
-  double min_clearance_m = 0.0;   ///< narrowest place along the edge [m]
-  std::vector<Vec2> polyline_m;   ///< simplified skeleton path from u to v [m]
+  int u = 0, v = 0;              ///< node ids
+  double length_m = 0.0;         ///< along the skeleton [m]
+  double min_clearance_m = 0.0;  ///< narrowest place along the edge [m]
+  std::vector<Vec2> polyline_m;  ///< simplified skeleton path from u to v [m]
 };
 
 /// A skeleton graph on a grid's geometry. Node and edge ids are their indices.
 class TopologicalMap {
  public:
   TopologicalMap() = default;
-  TopologicalMap(const GridGeometry& geometry, std::vector<TopoNode> nodes, std::vector<TopoEdge> edges)
+  TopologicalMap(const GridGeometry& geometry, std::vector<TopoNode> nodes,
+                 std::vector<TopoEdge> edges)
       : geometry_(geometry), nodes_(std::move(nodes)), edges_(std::move(edges)) {}
 
   const GridGeometry& geometry() const { return geometry_; }

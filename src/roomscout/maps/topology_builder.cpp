@@ -45,35 +45,46 @@ double pathLength(const std::vector<cv::Point>& path) {
 
 void TopologyBuilderOptions::validate() const {
   if (!(opening_radius_m >= 0.0)) throw OptionError("topology.opening_radius_m must be >= 0");
-  if (!(furniture_max_area_m2 >= 0.0)) throw OptionError("topology.furniture_max_area_m2 must be >= 0");
-  if (!(furniture_max_extent_m >= 0.0)) throw OptionError("topology.furniture_max_extent_m must be >= 0");
+  if (!(furniture_max_area_m2 >= 0.0))
+    throw OptionError("topology.furniture_max_area_m2 must be >= 0");
+  if (!(furniture_max_extent_m >= 0.0))
+    throw OptionError("topology.furniture_max_extent_m must be >= 0");
   if (!(min_free_area_m2 >= 0.0)) throw OptionError("topology.min_free_area_m2 must be >= 0");
   if (!(spur_min_length_m >= 0.0)) throw OptionError("topology.spur_min_length_m must be >= 0");
   if (!(spur_disc_factor >= 0.0)) throw OptionError("topology.spur_disc_factor must be >= 0");
-  if (!(simplify_tolerance_m >= 0.0)) throw OptionError("topology.simplify_tolerance_m must be >= 0");
+  if (!(simplify_tolerance_m >= 0.0))
+    throw OptionError("topology.simplify_tolerance_m must be >= 0");
 }
 
 std::vector<ParameterRef> TopologyBuilderOptions::parameters() {
   return {
-      {"opening_radius_m", &opening_radius_m, "opening of the free space, below half the narrowest door [m]"},
-      {"furniture_max_area_m2", &furniture_max_area_m2, "enclosed obstacle blobs up to this area are filled [m^2]"},
-      {"furniture_max_extent_m", &furniture_max_extent_m, "... and up to this bounding-box side [m]"},
+      {"opening_radius_m", &opening_radius_m,
+       "opening of the free space, below half the narrowest door [m]"},
+      {"furniture_max_area_m2", &furniture_max_area_m2,
+       "enclosed obstacle blobs up to this area are filled [m^2]"},
+      {"furniture_max_extent_m", &furniture_max_extent_m,
+       "... and up to this bounding-box side [m]"},
       {"min_free_area_m2", &min_free_area_m2, "smaller free patches get no skeleton [m^2]"},
       {"spur_min_length_m", &spur_min_length_m, "dead-end edges shorter than this are pruned [m]"},
-      {"spur_disc_factor", &spur_disc_factor, "dead ends within this many junction clearances are pruned"},
+      {"spur_disc_factor", &spur_disc_factor,
+       "dead ends within this many junction clearances are pruned"},
       {"simplify_tolerance_m", &simplify_tolerance_m, "polyline simplification tolerance [m]"},
   };
 }
 
-TopologyBuilder::TopologyBuilder(const TopologyBuilderOptions& options) : options_(options) { options_.validate(); }
+TopologyBuilder::TopologyBuilder(const TopologyBuilderOptions& options) : options_(options) {
+  options_.validate();
+}
 
-TopologicalMap TopologyBuilder::build(const OccupancyGrid& grid, const SemanticMap* semantic) const {
+TopologicalMap TopologyBuilder::build(const OccupancyGrid& grid,
+                                      const SemanticMap* semantic) const {
   return build(maps::stateView(grid), grid.geometry(), semantic);
 }
 
 TopologicalMap TopologyBuilder::build(const cv::Mat& states, const GridGeometry& geometry,
                                       const SemanticMap* semantic) const {
-  if (states.type() != CV_8U || states.rows != geometry.height() || states.cols != geometry.width()) {
+  if (states.type() != CV_8U || states.rows != geometry.height() ||
+      states.cols != geometry.width()) {
     throw InvalidArgument("TopologyBuilder: states must be CV_8U of the geometry's size");
   }
   if (states.empty()) return TopologicalMap(geometry, {}, {});
@@ -83,14 +94,15 @@ TopologicalMap TopologyBuilder::build(const cv::Mat& states, const GridGeometry&
   if (known.empty()) return TopologicalMap(geometry, {}, {});
   if (known.size() != states.size()) {
     const Vec2 origin = geometry.origin_m() + Vec2(known.x, known.y) * res;
-    const TopologicalMap crop =
-        build(states(known).clone(), GridGeometry(origin, res, known.width, known.height), semantic);
+    const TopologicalMap crop = build(
+        states(known).clone(), GridGeometry(origin, res, known.width, known.height), semantic);
     return TopologicalMap(geometry, crop.nodes(), crop.edges());
   }
 
   // 1. Free space, furniture filled, opened, tiny patches dropped; one-pixel frame.
-  cv::Mat space = maps::fillableFreeSpace(states, static_cast<int>(options_.furniture_max_area_m2 / (res * res)),
-                                          static_cast<int>(std::ceil(options_.furniture_max_extent_m / res)));
+  cv::Mat space = maps::fillableFreeSpace(
+      states, static_cast<int>(options_.furniture_max_area_m2 / (res * res)),
+      static_cast<int>(std::ceil(options_.furniture_max_extent_m / res)));
   const cv::Mat filled = space.clone();  // unknown cells in here are enclosed, not frontiers
   const int r = static_cast<int>(std::lround(options_.opening_radius_m / res));
   if (r > 0) {
@@ -114,7 +126,9 @@ TopologicalMap TopologyBuilder::build(const cv::Mat& states, const GridGeometry&
   // 2. Skeleton.
   const cv::Mat skel = maps::thinZhangSuen(space);
   const int w = skel.cols, h = skel.rows;
-  auto on = [&](int x, int y) { return x >= 0 && y >= 0 && x < w && y < h && skel.ptr<std::uint8_t>(y)[x] != 0; };
+  auto on = [&](int x, int y) {
+    return x >= 0 && y >= 0 && x < w && y < h && skel.ptr<std::uint8_t>(y)[x] != 0;
+  };
 
   // 3. Node pixels: crossing number 1 or 0 (ends, isolated points) or >= 3 (junctions). The
   // crossing number ignores the staircase pixels thinning leaves on diagonals, which have
@@ -128,7 +142,8 @@ TopologicalMap TopologyBuilder::build(const cv::Mat& states, const GridGeometry&
       if (!skel_row[x]) continue;
       int cn = 0;
       for (int k = 0; k < 8; ++k) {
-        const bool a = on(x + kRingX[k], y + kRingY[k]), b = on(x + kRingX[(k + 1) % 8], y + kRingY[(k + 1) % 8]);
+        const bool a = on(x + kRingX[k], y + kRingY[k]),
+                   b = on(x + kRingX[(k + 1) % 8], y + kRingY[(k + 1) % 8]);
         cn += (!a && b);
       }
       if (cn != 2) {
@@ -233,7 +248,8 @@ TopologicalMap TopologyBuilder::build(const cv::Mat& states, const GridGeometry&
     e.path = std::move(path);
     e.length_px = pathLength(e.path);
     e.min_clearance_px = nodes[start_node].clearance_px;
-    for (const cv::Point& p : e.path) e.min_clearance_px = std::min(e.min_clearance_px, clearance.at<float>(p));
+    for (const cv::Point& p : e.path)
+      e.min_clearance_px = std::min(e.min_clearance_px, clearance.at<float>(p));
     edges.push_back(std::move(e));
   };
   for (int id = 0; id < static_cast<int>(nodes.size()); ++id) {
@@ -317,7 +333,8 @@ TopologicalMap TopologyBuilder::build(const cv::Mat& states, const GridGeometry&
       // Never prune every edge of a junction in one pass: leave it at least one.
       if (deg[junction] - removed_at[junction] <= 1) continue;
       const double reach = cv::norm(nodes[end].px - nodes[junction].px);
-      if (e.length_px < spur_px || reach <= options_.spur_disc_factor * nodes[junction].clearance_px) {
+      if (e.length_px < spur_px ||
+          reach <= options_.spur_disc_factor * nodes[junction].clearance_px) {
         e.alive = false;
         nodes[end].alive = false;
         ++removed_at[junction];
@@ -380,7 +397,9 @@ TopologicalMap TopologyBuilder::build(const cv::Mat& states, const GridGeometry&
       for (int dy = -reach; dy <= reach && n.kind != TopoNodeKind::kFrontier; ++dy) {
         for (int dx = -reach; dx <= reach; ++dx) {
           const int x = cell.x + dx, y = cell.y + dy;
-          if (dx * dx + dy * dy > reach * reach || x < 0 || y < 0 || x >= states.cols || y >= states.rows) continue;
+          if (dx * dx + dy * dy > reach * reach || x < 0 || y < 0 || x >= states.cols ||
+              y >= states.rows)
+            continue;
           if (states.ptr<std::uint8_t>(y)[x] == unknown && !filled.ptr<std::uint8_t>(y)[x] &&
               isFrontierCell(x, y)) {
             n.kind = TopoNodeKind::kFrontier;
@@ -408,7 +427,8 @@ TopologicalMap TopologyBuilder::build(const cv::Mat& states, const GridGeometry&
     } else {
       simple = e.path;
     }
-    for (const cv::Point& p : simple) te.polyline_m.push_back(geometry.centerOf(Cell{p.x - 1, p.y - 1}));
+    for (const cv::Point& p : simple)
+      te.polyline_m.push_back(geometry.centerOf(Cell{p.x - 1, p.y - 1}));
     out_edges.push_back(std::move(te));
   }
   return TopologicalMap(geometry, std::move(out_nodes), std::move(out_edges));

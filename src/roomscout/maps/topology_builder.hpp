@@ -1,8 +1,8 @@
 #pragma once
 // Builds the topological map (paper: "thinning the free space") from an occupancy grid:
 // binarise, fill enclosed furniture blobs, morphological opening, Zhang-Suen thinning
-// (the skeleton of cv::ximgproc::thinning, computed faster by maps/thinning.hpp), then a graph of junction and end nodes joined by edges along the
-// skeleton, with spurs pruned.
+// (the skeleton of cv::ximgproc::thinning, computed faster by maps/thinning.hpp), then a graph of
+// junction and end nodes joined by edges along the skeleton, with spurs pruned.
 
 #include <vector>
 
@@ -41,7 +41,8 @@ class TopologyBuilder final {
 
   /// @param states CV_8U CellState per cell, row y = grid row y, geometry's size
   /// @param semantic rooms for the nodes' region ids; may be null (ids 0)
-  TopologicalMap build(const cv::Mat& states, const GridGeometry& geometry, const SemanticMap* semantic) const;
+  TopologicalMap build(const cv::Mat& states, const GridGeometry& geometry,
+                       const SemanticMap* semantic) const;
   TopologicalMap build(const OccupancyGrid& grid, const SemanticMap* semantic = nullptr) const;
 
  private:

@@ -121,11 +121,13 @@ void Costmap::computeClearance(const CellRect& rect) {
     }
   }
   cv::Mat distance_px;
-  if (any_obstacle) cv::distanceTransform(mask, distance_px, cv::DIST_L2, cv::DIST_MASK_PRECISE, CV_32F);
+  if (any_obstacle)
+    cv::distanceTransform(mask, distance_px, cv::DIST_L2, cv::DIST_MASK_PRECISE, CV_32F);
   for (int y = rect.min_y; y < rect.max_y; ++y) {
     const float* d = any_obstacle ? distance_px.ptr<float>(y - source.min_y) : nullptr;
     float* out = &clearance_px_[geometry_.index(Cell{rect.min_x, y})];
-    for (int x = rect.min_x; x < rect.max_x; ++x) out[x - rect.min_x] = d ? std::min(d[x - source.min_x], cap_px) : cap_px;
+    for (int x = rect.min_x; x < rect.max_x; ++x)
+      out[x - rect.min_x] = d ? std::min(d[x - source.min_x], cap_px) : cap_px;
   }
 }
 

@@ -65,7 +65,7 @@ class Costmap {
   std::vector<std::uint8_t> unknown_;
   std::vector<float> step_cost_;
   std::vector<float> clearance_px_;  ///< clearance in cells, capped
-  std::vector<CellState> states_;  ///< grid states this costmap was computed from
+  std::vector<CellState> states_;    ///< grid states this costmap was computed from
 
   void rebuild(const OccupancyGrid& grid);
   /// Recomputes clearance within `rect` from the obstacles of the current states_.

@@ -15,8 +15,9 @@ std::vector<Cell> discOffsets(double radius_cells) {
   return offsets;
 }
 
-bool pathBlockedAhead(const OccupancyGrid& grid, const std::vector<Vec2>& waypoints_m, std::size_t from,
-                      const Vec2& robot_m, double horizon_m, const std::vector<Cell>& disc) {
+bool pathBlockedAhead(const OccupancyGrid& grid, const std::vector<Vec2>& waypoints_m,
+                      std::size_t from, const Vec2& robot_m, double horizon_m,
+                      const std::vector<Cell>& disc) {
   const GridGeometry& g = grid.geometry();
   for (std::size_t i = from; i < waypoints_m.size(); ++i) {
     if ((waypoints_m[i] - robot_m).squaredNorm() > horizon_m * horizon_m) continue;

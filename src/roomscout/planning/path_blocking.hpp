@@ -18,7 +18,8 @@ std::vector<Cell> discOffsets(double radius_cells);
 /// True when an occupied cell of `grid` lies within `disc` (cell offsets, e.g. the robot's
 /// lethal radius) of a waypoint at index `from` or later that is within `horizon_m` of the
 /// robot: beyond the laser's range a new scan cannot have blocked the path.
-bool pathBlockedAhead(const OccupancyGrid& grid, const std::vector<Vec2>& waypoints_m, std::size_t from,
-                      const Vec2& robot_m, double horizon_m, const std::vector<Cell>& disc);
+bool pathBlockedAhead(const OccupancyGrid& grid, const std::vector<Vec2>& waypoints_m,
+                      std::size_t from, const Vec2& robot_m, double horizon_m,
+                      const std::vector<Cell>& disc);
 
 }  // namespace roomscout

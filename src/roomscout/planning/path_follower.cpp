@@ -78,8 +78,7 @@ Vec2 PathFollower::carrot(const Vec2& robot_m) const {
     const double length_m = arc_m[i + 1] - arc_m[i];
     if (!(length_m > 0.0)) continue;
     // The part of the segment beyond the progress point.
-    const double t0 =
-        i == segment ? std::clamp((progress_m - arc_m[i]) / length_m, 0.0, 1.0) : 0.0;
+    const double t0 = i == segment ? std::clamp((progress_m - arc_m[i]) / length_m, 0.0, 1.0) : 0.0;
     const Vec2 a = w[i] + t0 * (w[i + 1] - w[i]);
     const Vec2 d = w[i + 1] - a;
     const Vec2 f = a - robot_m;
@@ -111,9 +110,8 @@ VelocityCommand PathFollower::compute(const Pose2& robot) {
     return command;
   }
   command.angular_radps = std::clamp(options_.heading_gain * error_rad, -max_w, max_w);
-  const double remaining_m =
-      std::max((path().waypoints_m.back() - position).norm(),
-               progress_.arcLength_m().back() - progress_.progress_m());
+  const double remaining_m = std::max((path().waypoints_m.back() - position).norm(),
+                                      progress_.arcLength_m().back() - progress_.progress_m());
   const double approach_mps = std::max(kMinApproachSpeed_mps, remaining_m / kApproachTime_s);
   command.linear_mps =
       std::min(options_.max_linear_speed_mps * std::max(0.0, std::cos(error_rad)), approach_mps);

@@ -73,7 +73,8 @@ bool ColumnWorld::solidAt(const Eigen::Vector3d& p_map) const {
 }
 
 bool ColumnWorld::nearSurface(const Eigen::Vector3d& p_map, double tolerance_m) const {
-  if (std::abs(p_map.z() - floor_m()) <= tolerance_m || std::abs(p_map.z() - ceiling_m_) <= tolerance_m) {
+  if (std::abs(p_map.z() - floor_m()) <= tolerance_m ||
+      std::abs(p_map.z() - ceiling_m_) <= tolerance_m) {
     return true;
   }
   const Cell c = geometry_.cellOf(p_map.head<2>());
@@ -83,7 +84,8 @@ bool ColumnWorld::nearSurface(const Eigen::Vector3d& p_map, double tolerance_m) 
       const Cell n{c.x + dx, c.y + dy};
       if (!geometry_.contains(n)) continue;
       for (const ZInterval& z : intervals(geometry_.index(n))) {
-        if (z.z_min_m - tolerance_m <= p_map.z() && p_map.z() <= z.z_max_m + tolerance_m) return true;
+        if (z.z_min_m - tolerance_m <= p_map.z() && p_map.z() <= z.z_max_m + tolerance_m)
+          return true;
       }
     }
   }

@@ -43,7 +43,9 @@ class ColumnWorld {
     return {intervals_.data() + offsets_[cell_index], intervals_.data() + offsets_[cell_index + 1]};
   }
 #endif
-  bool columnEmpty(std::size_t cell_index) const { return offsets_[cell_index] == offsets_[cell_index + 1]; }
+  bool columnEmpty(std::size_t cell_index) const {
+    return offsets_[cell_index] == offsets_[cell_index + 1];
+  }
 
   /// True when the point p_map [m] is inside a solid interval, below the floor or above the
   /// ceiling. Points outside the raster are not solid.

@@ -40,7 +40,8 @@ std::vector<ParameterRef> EpisodeOptions::parameters() {
       {"completion_rate", &completion_rate, "rate that counts as fully explored"},
       {"stuck_timeout_s", &stuck_timeout_s, "blocked this long triggers a recovery [s]"},
       {"room_dwell_s", &room_dwell_s, "time in a room before it counts as entered [s]"},
-      {"map_mode", &map_mode, "map the Explorer sees: fixed (the world's extent) or growing (as SLAM)"},
+      {"map_mode", &map_mode,
+       "map the Explorer sees: fixed (the world's extent) or growing (as SLAM)"},
       {"map_margin_m", &map_margin_m, "growing map: unknown border around the known area [m]"},
   };
 }
@@ -69,7 +70,8 @@ void EpisodeConfig::validate() const {
 
 std::vector<ParameterGroup> EpisodeConfig::groups() {
   // Fields mirrored from another group are not editable on their own.
-  auto without = [](std::vector<ParameterRef> params, std::initializer_list<std::string_view> names) {
+  auto without = [](std::vector<ParameterRef> params,
+                    std::initializer_list<std::string_view> names) {
     std::erase_if(params, [&](const ParameterRef& p) {
       return std::find(names.begin(), names.end(), p.name) != names.end();
     });
@@ -80,7 +82,8 @@ std::vector<ParameterGroup> EpisodeConfig::groups() {
       {"world", without(world.parameters(), {"robot_radius_m"})},
       {"laser", laser.parameters()},
       {"mapping", mapping.parameters()},
-      {"follower", without(follower.parameters(), {"max_linear_speed_mps", "max_angular_speed_radps"})},
+      {"follower",
+       without(follower.parameters(), {"max_linear_speed_mps", "max_angular_speed_radps"})},
       {"episode", episode.parameters()},
       {"noise", noise.parameters()},
       {"slam", slam.parameters()},
@@ -88,7 +91,8 @@ std::vector<ParameterGroup> EpisodeConfig::groups() {
   for (ParameterGroup& g : explorer.groups()) {
     if (g.name == "follower" || g.name == "laser") continue;  // mirrored (resolve())
     if (g.name == "costmap") g.parameters = without(std::move(g.parameters), {"robot_radius_m"});
-    auto same = std::find_if(groups.begin(), groups.end(), [&](const ParameterGroup& h) { return h.name == g.name; });
+    auto same = std::find_if(groups.begin(), groups.end(),
+                             [&](const ParameterGroup& h) { return h.name == g.name; });
     if (same != groups.end()) {
       same->parameters.insert(same->parameters.end(), g.parameters.begin(), g.parameters.end());
     } else {
@@ -144,8 +148,9 @@ ExplorerOptions explorerOptionsFor(const WorldModel& world, EpisodeConfig config
   return options;
 }
 
-EpisodeResult runEpisode(const WorldModel& world, EpisodeConfig config, ExplorationStrategy& strategy,
-                         std::uint64_t seed, const EpisodeProgress& progress,
+EpisodeResult runEpisode(const WorldModel& world, EpisodeConfig config,
+                         ExplorationStrategy& strategy, std::uint64_t seed,
+                         const EpisodeProgress& progress,
                          const std::vector<EpisodeObserver*>& observers) {
   config.resolve();
   config.validate();
@@ -155,8 +160,9 @@ EpisodeResult runEpisode(const WorldModel& world, EpisodeConfig config, Explorat
   return runEpisode(world, config, explorer, seed, progress, observers);
 }
 
-EpisodeResult runEpisode(const WorldModel& world, EpisodeConfig config, Explorer& explorer, std::uint64_t seed,
-                         const EpisodeProgress& progress, const std::vector<EpisodeObserver*>& observers) {
+EpisodeResult runEpisode(const WorldModel& world, EpisodeConfig config, Explorer& explorer,
+                         std::uint64_t seed, const EpisodeProgress& progress,
+                         const std::vector<EpisodeObserver*>& observers) {
   const auto wall_start = Clock::now();
   config.resolve();
   config.validate();
@@ -187,11 +193,13 @@ EpisodeResult runEpisode(const WorldModel& world, EpisodeConfig config, Explorer
   // Growing mode: the map the Explorer sees, and the bounding box of the known cells.
   OccupancyGrid published;
   CellRect known_cells;
-  const int margin_cells = static_cast<int>(std::ceil(opt.map_margin_m / map_geometry.resolution_m()));
+  const int margin_cells =
+      static_cast<int>(std::ceil(opt.map_margin_m / map_geometry.resolution_m()));
 
   EpisodeResult result;
   result.reachable_area_m2 = truth.reachableArea_m2();
-  const double max_time_s = opt.max_time_s > 0.0 ? opt.max_time_s : 600.0 + 5.0 * result.reachable_area_m2;
+  const double max_time_s =
+      opt.max_time_s > 0.0 ? opt.max_time_s : 600.0 + 5.0 * result.reachable_area_m2;
   result.max_time_s = max_time_s;
 
   const double scan_period_s = 1.0 / config.laser.rate_hz;
@@ -244,7 +252,8 @@ EpisodeResult runEpisode(const WorldModel& world, EpisodeConfig config, Explorer
       if (progress) progress(t, max_time_s, rate);
     }
 
-    for (EpisodeObserver* o : observers) o->onStep(EpisodeSnapshot{t, robot.pose(), grid, world, scanned, estimate});
+    for (EpisodeObserver* o : observers)
+      o->onStep(EpisodeSnapshot{t, robot.pose(), grid, world, scanned, estimate});
 
     // 2. Publish the map and ask the Explorer what to do.
     const OccupancyGrid* map = &grid;
@@ -259,8 +268,9 @@ EpisodeResult runEpisode(const WorldModel& world, EpisodeConfig config, Explorer
       } else {
         published.copyCells(grid, changed);
         const Cell d = map_geometry.cellOf(g.centerOf(Cell{0, 0}));
-        hint = changed.empty() ? changed : CellRect{changed.min_x - d.x, changed.min_y - d.y, changed.max_x - d.x,
-                                                    changed.max_y - d.y};
+        hint = changed.empty() ? changed
+                               : CellRect{changed.min_x - d.x, changed.min_y - d.y,
+                                          changed.max_x - d.x, changed.max_y - d.y};
       }
       map = &published;
     }
@@ -327,7 +337,8 @@ EpisodeResult runEpisode(const WorldModel& world, EpisodeConfig config, Explorer
   const OccupancyGrid& final_map = growing ? published : grid;
   explorer.finish(final_map);
   for (const AnalysisMap* m : {explorer.roomMap(), explorer.skeletonMap()}) {
-    if (m != nullptr) result.map_updates[std::string(m->name())] = TimingStats::of(m->updateTimes_ms());
+    if (m != nullptr)
+      result.map_updates[std::string(m->name())] = TimingStats::of(m->updateTimes_ms());
   }
   for (EpisodeObserver* o : observers) {
     o->onFinish(EpisodeSnapshot{t, robot.pose(), grid, world, true, estimate});

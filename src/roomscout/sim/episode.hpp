@@ -33,16 +33,16 @@ enum class MapMode {
 };
 
 struct EpisodeOptions {
-  double dt_s = 0.05;                  ///< simulation and control step [s]
-  double max_time_s = 0.0;             ///< simulated time limit [s]; 0 = 600 s + 5 s per m^2
-                                       ///< of reachable floor
-  double metrics_period_s = 1.0;       ///< how often the exploration rate is sampled [s]
-  double completion_rate = 0.98;       ///< rate that counts as fully explored (T98, L98)
-  double stuck_timeout_s = 2.0;        ///< commanded motion blocked this long: the driver
-                                       ///< reports the robot blocked [s]
-  double room_dwell_s = 2.0;           ///< time inside a room before it counts as entered [s]
-  std::string map_mode = "fixed";      ///< "fixed" or "growing" (MapMode)
-  double map_margin_m = 1.0;           ///< growing map: unknown border around the known area [m]
+  double dt_s = 0.05;              ///< simulation and control step [s]
+  double max_time_s = 0.0;         ///< simulated time limit [s]; 0 = 600 s + 5 s per m^2
+                                   ///< of reachable floor
+  double metrics_period_s = 1.0;   ///< how often the exploration rate is sampled [s]
+  double completion_rate = 0.98;   ///< rate that counts as fully explored (T98, L98)
+  double stuck_timeout_s = 2.0;    ///< commanded motion blocked this long: the driver
+                                   ///< reports the robot blocked [s]
+  double room_dwell_s = 2.0;       ///< time inside a room before it counts as entered [s]
+  std::string map_mode = "fixed";  ///< "fixed" or "growing" (MapMode)
+  double map_margin_m = 1.0;       ///< growing map: unknown border around the known area [m]
   MapMode mapMode() const;
   void validate() const;
   std::vector<ParameterRef> parameters();
@@ -117,27 +117,27 @@ struct EpisodeResult {
   double length_m = 0.0;
   double max_time_s = 0.0;
   double reachable_area_m2 = 0.0;
-  bool room_truth = false;         ///< the world has ground-truth rooms: without, the two
-                                   ///< counts below are 0 and mean nothing
-  int revisits = 0;                ///< entries into a ground-truth room entered before
-  std::optional<int> revisits98;   ///< ... counted up to t98_s (none if never reached):
-                                   ///< the revisits of the exploration itself, whatever the
-                                   ///< strategy does once the map is complete
+  bool room_truth = false;        ///< the world has ground-truth rooms: without, the two
+                                  ///< counts below are 0 and mean nothing
+  int revisits = 0;               ///< entries into a ground-truth room entered before
+  std::optional<int> revisits98;  ///< ... counted up to t98_s (none if never reached):
+                                  ///< the revisits of the exploration itself, whatever the
+                                  ///< strategy does once the map is complete
   int rooms_entered = 0;
   int goals = 0;
   int goal_failures = 0;
-  int recoveries = 0;                ///< back-offs after the robot was blocked
-  int stalls = 0;                  ///< goals failed by the stall watchdog
+  int recoveries = 0;  ///< back-offs after the robot was blocked
+  int stalls = 0;      ///< goals failed by the stall watchdog
   double wall_time_s = 0.0;
-  TimingStats occupancy_update;    ///< per scan: ray tracing into the grid
-  TimingStats costmap_update;      ///< per decision
-  TimingStats decision;            ///< strategy decide() per call
-  TimingStats slam_update;         ///< per scan: the SLAM update (with SLAM only)
+  TimingStats occupancy_update;                    ///< per scan: ray tracing into the grid
+  TimingStats costmap_update;                      ///< per decision
+  TimingStats decision;                            ///< strategy decide() per call
+  TimingStats slam_update;                         ///< per scan: the SLAM update (with SLAM only)
   std::map<std::string, TimingStats> map_updates;  ///< per observer, by its name()
   std::vector<CurveSample> curve;
   std::vector<TrajectorySample> trajectory;  ///< one per scan
   std::optional<SlamResult> slam;            ///< with SLAM only
-  OccupancyGrid map;               ///< the final map as the Explorer saw it (growing: cropped)
+  OccupancyGrid map;  ///< the final map as the Explorer saw it (growing: cropped)
 };
 
 /// Progress report for a caller's display: simulated time, limit, current rate.
@@ -155,13 +155,15 @@ ExplorerOptions explorerOptionsFor(const WorldModel& world, EpisodeConfig config
 /// (read its rooms and skeleton graph afterwards). The world model is shared read-only;
 /// everything else is created here from `config` and `seed`, so the same inputs give the
 /// same result. `observers` build further maps (the point cloud) as the robot explores.
-EpisodeResult runEpisode(const WorldModel& world, EpisodeConfig config, Explorer& explorer, std::uint64_t seed,
-                         const EpisodeProgress& progress = {}, const std::vector<EpisodeObserver*>& observers = {});
+EpisodeResult runEpisode(const WorldModel& world, EpisodeConfig config, Explorer& explorer,
+                         std::uint64_t seed, const EpisodeProgress& progress = {},
+                         const std::vector<EpisodeObserver*>& observers = {});
 
 /// The same with an Explorer made here around `strategy`, building only the maps the
 /// strategy reads.
-EpisodeResult runEpisode(const WorldModel& world, EpisodeConfig config, ExplorationStrategy& strategy,
-                         std::uint64_t seed, const EpisodeProgress& progress = {},
+EpisodeResult runEpisode(const WorldModel& world, EpisodeConfig config,
+                         ExplorationStrategy& strategy, std::uint64_t seed,
+                         const EpisodeProgress& progress = {},
                          const std::vector<EpisodeObserver*>& observers = {});
 
 }  // namespace roomscout::sim

@@ -18,10 +18,10 @@ class WorldModel;
 /// What an observer may look at after one simulation step.
 struct EpisodeSnapshot {
   double time_s = 0.0;
-  Pose2 robot;                ///< true pose: where simulated sensors see from
+  Pose2 robot;  ///< true pose: where simulated sensors see from
   const OccupancyGrid& grid;
-  const WorldModel& world;    ///< ground truth: for simulated sensors only, never for maps
-  bool grid_changed = false;  ///< a laser scan was integrated in this step
+  const WorldModel& world;        ///< ground truth: for simulated sensors only, never for maps
+  bool grid_changed = false;      ///< a laser scan was integrated in this step
   std::optional<Pose2> estimate;  ///< the robot's own estimate, when it differs from the truth
   /// The pose maps are built at: the estimate, or the true pose when the robot is told it.
   const Pose2& believed() const { return estimate ? *estimate : robot; }

@@ -12,7 +12,8 @@ namespace roomscout::sim {
 GridGeometry mapGeometryFor(const WorldModel& world, double resolution_m) {
   const GridGeometry& r = world.geometry();
   const int width = static_cast<int>(std::ceil(r.width() * r.resolution_m() / resolution_m - 1e-9));
-  const int height = static_cast<int>(std::ceil(r.height() * r.resolution_m() / resolution_m - 1e-9));
+  const int height =
+      static_cast<int>(std::ceil(r.height() * r.resolution_m() / resolution_m - 1e-9));
   return GridGeometry(r.origin_m(), resolution_m, width, height);
 }
 
@@ -101,7 +102,8 @@ ExplorationTruth::ExplorationTruth(const WorldModel& world, const GridGeometry& 
 }
 
 double ExplorationTruth::reachableArea_m2() const {
-  return static_cast<double>(reachable_.size()) * geometry_.resolution_m() * geometry_.resolution_m();
+  return static_cast<double>(reachable_.size()) * geometry_.resolution_m() *
+         geometry_.resolution_m();
 }
 
 double ExplorationTruth::explorationRate(const OccupancyGrid& grid) const {
@@ -112,7 +114,9 @@ double ExplorationTruth::explorationRate(const OccupancyGrid& grid) const {
 }
 
 ExplorationRateCounter::ExplorationRateCounter(const ExplorationTruth& truth)
-    : truth_(truth), reachable_(truth.geometry().cellCount(), 0), counted_(truth.geometry().cellCount(), 0) {
+    : truth_(truth),
+      reachable_(truth.geometry().cellCount(), 0),
+      counted_(truth.geometry().cellCount(), 0) {
   for (std::uint32_t i : truth.reachableCells()) reachable_[i] = 1;
 }
 

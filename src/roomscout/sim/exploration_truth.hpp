@@ -15,7 +15,8 @@ class ExplorationTruth {
  public:
   /// @param map_geometry the grid the mapper fills; must share the raster's origin
   /// @param robot_radius_m footprint radius used for the opening [m]
-  ExplorationTruth(const WorldModel& world, const GridGeometry& map_geometry, double robot_radius_m);
+  ExplorationTruth(const WorldModel& world, const GridGeometry& map_geometry,
+                   double robot_radius_m);
 
   const GridGeometry& geometry() const { return geometry_; }
   /// Map cells that are free in the ground truth (every raster cell they overlap is free).

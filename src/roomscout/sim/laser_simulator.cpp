@@ -8,7 +8,8 @@
 namespace roomscout::sim {
 
 void LaserOptions::validate() const {
-  if (num_beams < 1 || num_beams > 100000) throw OptionError("laser.num_beams must be in [1, 100000]");
+  if (num_beams < 1 || num_beams > 100000)
+    throw OptionError("laser.num_beams must be in [1, 100000]");
   if (!(range_min_m >= 0.0 && range_min_m < range_max_m)) {
     throw OptionError("laser: need 0 <= range_min_m < range_max_m");
   }
@@ -24,8 +25,8 @@ std::vector<ParameterRef> LaserOptions::parameters() {
   };
 }
 
-LaserSimulator::LaserSimulator(const WorldModel& world, const LaserOptions& options, std::uint64_t seed,
-                               const RangeNoise& noise)
+LaserSimulator::LaserSimulator(const WorldModel& world, const LaserOptions& options,
+                               std::uint64_t seed, const RangeNoise& noise)
     : world_(world), options_(options), noise_(noise), rng_(seed) {
   options_.validate();
   noise_.validate();

@@ -14,7 +14,8 @@ namespace roomscout::sim {
 
 void LidarOptions::validate() const {
   if (num_rings < 1 || num_rings > 64) throw OptionError("lidar.num_rings must be in [1, 64]");
-  if (!(elevation_min_deg >= -89.0 && elevation_max_deg <= 89.0 && elevation_min_deg <= elevation_max_deg)) {
+  if (!(elevation_min_deg >= -89.0 && elevation_max_deg <= 89.0 &&
+        elevation_min_deg <= elevation_max_deg)) {
     throw OptionError("lidar: need -89 <= elevation_min_deg <= elevation_max_deg <= 89");
   }
   if (num_rings > 1 && !(elevation_min_deg < elevation_max_deg)) {
@@ -43,8 +44,8 @@ std::vector<ParameterRef> LidarOptions::parameters() {
   };
 }
 
-LidarSimulator::LidarSimulator(const ColumnWorld& world, const LidarOptions& options, std::uint64_t seed,
-                               const RangeNoise& noise)
+LidarSimulator::LidarSimulator(const ColumnWorld& world, const LidarOptions& options,
+                               std::uint64_t seed, const RangeNoise& noise)
     : world_(world), options_(options), noise_(noise), rng_(seed) {
   options_.validate();
   noise_.validate();
@@ -53,7 +54,8 @@ LidarSimulator::LidarSimulator(const ColumnWorld& world, const LidarOptions& opt
     const double e = options_.num_rings == 1
                          ? options_.elevation_min_deg
                          : options_.elevation_min_deg +
-                               (options_.elevation_max_deg - options_.elevation_min_deg) * k / (options_.num_rings - 1);
+                               (options_.elevation_max_deg - options_.elevation_min_deg) * k /
+                                   (options_.num_rings - 1);
     elevations_rad_.push_back(e * deg);
   }
   // Per raster cell: the kind of a non-empty column (kKinds - 1: read the column), or
@@ -67,10 +69,10 @@ LidarSimulator::LidarSimulator(const ColumnWorld& world, const LidarOptions& opt
     // A column's span list, ordered by its values (for counting equal lists).
     using SpanList = std::span<const ZInterval>;
     const auto less = [](const SpanList& a, const SpanList& b) {
-      return std::lexicographical_compare(a.begin(), a.end(), b.begin(), b.end(),
-                                          [](const ZInterval& p, const ZInterval& q) {
-                                            return p.z_min_m != q.z_min_m ? p.z_min_m < q.z_min_m : p.z_max_m < q.z_max_m;
-                                          });
+      return std::lexicographical_compare(
+          a.begin(), a.end(), b.begin(), b.end(), [](const ZInterval& p, const ZInterval& q) {
+            return p.z_min_m != q.z_min_m ? p.z_min_m < q.z_min_m : p.z_max_m < q.z_max_m;
+          });
     };
     std::map<SpanList, std::size_t, decltype(less)> counts(less);
     for (std::size_t i = 0; i < n_cells; ++i) {
@@ -78,7 +80,8 @@ LidarSimulator::LidarSimulator(const ColumnWorld& world, const LidarOptions& opt
     }
     std::vector<std::pair<std::size_t, SpanList>> by_count;
     for (const auto& [list, count] : counts) by_count.emplace_back(count, list);
-    std::stable_sort(by_count.begin(), by_count.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+    std::stable_sort(by_count.begin(), by_count.end(),
+                     [](const auto& a, const auto& b) { return a.first > b.first; });
     std::map<SpanList, std::uint8_t, decltype(less)> kind_of(less);
     kind_offsets_.assign(1, 0);
     for (std::size_t k = 0; k < by_count.size() && k + 1 < kKinds; ++k) {
@@ -89,7 +92,8 @@ LidarSimulator::LidarSimulator(const ColumnWorld& world, const LidarOptions& opt
     clear_cells_.assign(n_cells, 255);
     std::uint8_t* d = clear_cells_.data();
     auto relax = [&](std::size_t i, std::size_t j) {
-      d[i] = static_cast<std::uint8_t>(std::min<int>(d[i], std::max<int>(d[j], kClearBase - 1) + 1));
+      d[i] =
+          static_cast<std::uint8_t>(std::min<int>(d[i], std::max<int>(d[j], kClearBase - 1) + 1));
     };
     for (int y = 0; y < h; ++y) {
       for (int x = 0; x < w; ++x) {
@@ -120,7 +124,8 @@ LidarSimulator::LidarSimulator(const ColumnWorld& world, const LidarOptions& opt
       }
     }
   }
-  const int n_columns = std::max(1, static_cast<int>(std::lround(360.0 / options_.azimuth_step_deg)));
+  const int n_columns =
+      std::max(1, static_cast<int>(std::lround(360.0 / options_.azimuth_step_deg)));
   for (int c = 0; c < n_columns; ++c) {
     const double a = 2.0 * M_PI * c / n_columns;
     cos_azimuth_.push_back(std::cos(a));
@@ -131,12 +136,14 @@ LidarSimulator::LidarSimulator(const ColumnWorld& world, const LidarOptions& opt
 Eigen::Isometry3d LidarSimulator::sensorPose(const Pose2& T_map_robot) const {
   Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
   T.linear() = Eigen::AngleAxisd(T_map_robot.yaw_rad, Eigen::Vector3d::UnitZ()).toRotationMatrix();
-  T.translation() = Eigen::Vector3d(T_map_robot.x_m, T_map_robot.y_m, world_.floor_m() + options_.mount_height_m);
+  T.translation() =
+      Eigen::Vector3d(T_map_robot.x_m, T_map_robot.y_m, world_.floor_m() + options_.mount_height_m);
   return T;
 }
 
-std::vector<LidarSimulator::Ring> LidarSimulator::makeRings(const std::vector<double>& elevations_rad, double z_m,
-                                                            double max_range_m, std::vector<int>& order) const {
+std::vector<LidarSimulator::Ring> LidarSimulator::makeRings(
+    const std::vector<double>& elevations_rad, double z_m, double max_range_m,
+    std::vector<int>& order) const {
   std::vector<Ring> rings;
   const double inf = std::numeric_limits<double>::infinity();
   for (double e : elevations_rad) {
@@ -159,13 +166,15 @@ std::vector<LidarSimulator::Ring> LidarSimulator::makeRings(const std::vector<do
   }
   order.resize(rings.size());
   std::iota(order.begin(), order.end(), 0);
-  std::sort(order.begin(), order.end(), [&](int a, int b) { return rings[a].limit_m < rings[b].limit_m; });
+  std::sort(order.begin(), order.end(),
+            [&](int a, int b) { return rings[a].limit_m < rings[b].limit_m; });
   return rings;
 }
 
-void LidarSimulator::castColumn(const Eigen::Vector2d& origin_m, double z_m, double cos_az, double sin_az,
-                                const std::vector<Ring>& rings, const std::vector<int>& order, double* hit_t_m,
-                                double* hit_dz_m, LidarSurface* hit_surface) const {
+void LidarSimulator::castColumn(const Eigen::Vector2d& origin_m, double z_m, double cos_az,
+                                double sin_az, const std::vector<Ring>& rings,
+                                const std::vector<int>& order, double* hit_t_m, double* hit_dz_m,
+                                LidarSurface* hit_surface) const {
   const int n = static_cast<int>(rings.size());
   for (int k = 0; k < n; ++k) hit_t_m[k] = -1.0;
   std::uint64_t active = n == 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << n) - 1;
@@ -181,7 +190,9 @@ void LidarSimulator::castColumn(const Eigen::Vector2d& origin_m, double z_m, dou
       active &= ~bit;
       if (rings[k].plane_hit) {
         hit_t_m[k] = rings[k].limit_m;
-        hit_dz_m[k] = (rings[k].plane_surface == LidarSurface::kFloor ? world_.floor_m() : world_.ceiling_m()) - z_m;
+        hit_dz_m[k] = (rings[k].plane_surface == LidarSurface::kFloor ? world_.floor_m()
+                                                                      : world_.ceiling_m()) -
+                      z_m;
         hit_surface[k] = rings[k].plane_surface;
       }
     }
@@ -220,7 +231,8 @@ void LidarSimulator::castColumn(const Eigen::Vector2d& origin_m, double z_m, dou
   constexpr int kMinJumpClearance = 3;  // jump over squares of radius 2 and more
   for (;;) {
     const int code = clear_cells[cell];
-    const int clear = code - (kClearBase - 1);  // chessboard distance to a solid column (<= 0: solid)
+    const int clear =
+        code - (kClearBase - 1);  // chessboard distance to a solid column (<= 0: solid)
     if (clear >= kMinJumpClearance) {
       // Every cell within clear - 1 of this one (chessboard distance) is empty: jump to the
       // step that leaves that square. The DDA parameters still advance by the same additions
@@ -234,7 +246,8 @@ void LidarSimulator::castColumn(const Eigen::Vector2d& origin_m, double z_m, dou
       for (int i = 1; i < kx; ++i) x_last += t_delta_x;
       for (int j = 1; j < ky; ++j) y_last += t_delta_y;
       double t_out;
-      if (x_last < y_last) {  // leaves along x; the y-steps taken before are those with Y_j <= x_last
+      if (x_last <
+          y_last) {  // leaves along x; the y-steps taken before are those with Y_j <= x_last
         int m = 0;
         while (t_max_y <= x_last) {
           t_max_y += t_delta_y;
@@ -270,15 +283,17 @@ void LidarSimulator::castColumn(const Eigen::Vector2d& origin_m, double z_m, dou
       const double t_in_m = t_in * res;
       // A column of a common kind is read from the kinds' table (in cache), not the column.
       const std::span<const ZInterval> spans =
-          code == kReadColumn ? world_.intervals(static_cast<std::size_t>(cell))
-                              : std::span<const ZInterval>(kind_spans_.data() + kind_offsets_[code],
-                                                           kind_spans_.data() + kind_offsets_[code + 1]);
+          code == kReadColumn
+              ? world_.intervals(static_cast<std::size_t>(cell))
+              : std::span<const ZInterval>(kind_spans_.data() + kind_offsets_[code],
+                                           kind_spans_.data() + kind_offsets_[code + 1]);
       // Heights the active rings span in this cell (conservative: over [t_in_m, t_out_m]):
       // a cell whose spans all lie outside them (by a margin far above the rounding of the
       // heights compared, 1e-15 m, and far below any geometry) cannot give a hit.
       double z_lo = inf, z_hi = -inf;
       if (slopes_sorted) {
-        const double lo = rings[std::countr_zero(active)].slope, hi = rings[63 - std::countl_zero(active)].slope;
+        const double lo = rings[std::countr_zero(active)].slope,
+                     hi = rings[63 - std::countl_zero(active)].slope;
         z_lo = z_m + std::min(lo * t_in_m, lo * t_out_m);
         z_hi = z_m + std::max(hi * t_in_m, hi * t_out_m);
       } else {
@@ -290,7 +305,8 @@ void LidarSimulator::castColumn(const Eigen::Vector2d& origin_m, double z_m, dou
       }
       bool reachable = false;
       for (const ZInterval& s : spans) {
-        reachable = reachable || (s.z_min_m <= z_hi + kSkipMargin_m && s.z_max_m >= z_lo - kSkipMargin_m);
+        reachable =
+            reachable || (s.z_min_m <= z_hi + kSkipMargin_m && s.z_max_m >= z_lo - kSkipMargin_m);
       }
       for (std::uint64_t bits = reachable ? active : 0; bits;) {
         const int k = std::countr_zero(bits);
@@ -302,9 +318,11 @@ void LidarSimulator::castColumn(const Eigen::Vector2d& origin_m, double z_m, dou
         // Heights this ring spans in the cell: a span outside them (with the same margin as
         // above) gives no hit, so the exact test below runs only where one is possible.
         const double z_end = z_m + r.slope * t_end;
-        const double ring_lo = std::min(z_in, z_end) - kSkipMargin_m, ring_hi = std::max(z_in, z_end) + kSkipMargin_m;
+        const double ring_lo = std::min(z_in, z_end) - kSkipMargin_m,
+                     ring_hi = std::max(z_in, z_end) + kSkipMargin_m;
         bool near = false;
-        for (const ZInterval& s : spans) near = near || (s.z_min_m <= ring_hi && s.z_max_m >= ring_lo);
+        for (const ZInterval& s : spans)
+          near = near || (s.z_min_m <= ring_hi && s.z_max_m >= ring_lo);
         if (!near) continue;
         double t_hit = inf, dz_hit = 0.0;
         for (const ZInterval& s : spans) {
@@ -377,7 +395,8 @@ LidarScan LidarSimulator::scan(const Pose2& T_map_robot) {
       }
       if (r < options_.range_min_m || r > options_.range_max_m) continue;
       const double scale = r_true > 0.0 ? r / r_true : 0.0;  // noise moves the point along its beam
-      scan.points_sensor.emplace_back(static_cast<float>(scale * t[k] * ca), static_cast<float>(scale * t[k] * sa),
+      scan.points_sensor.emplace_back(static_cast<float>(scale * t[k] * ca),
+                                      static_cast<float>(scale * t[k] * sa),
                                       static_cast<float>(scale * dz[k]));
       scan.surfaces.push_back(surface[k]);
     }
@@ -385,14 +404,15 @@ LidarScan LidarSimulator::scan(const Pose2& T_map_robot) {
   return scan;
 }
 
-std::optional<LidarHit> LidarSimulator::castRay(const Eigen::Vector3d& origin_map, double azimuth_rad,
-                                                double elevation_rad, double max_range_m) const {
+std::optional<LidarHit> LidarSimulator::castRay(const Eigen::Vector3d& origin_map,
+                                                double azimuth_rad, double elevation_rad,
+                                                double max_range_m) const {
   std::vector<int> order;
   const std::vector<Ring> rings = makeRings({elevation_rad}, origin_map.z(), max_range_m, order);
   double t = -1.0, dz = 0.0;
   LidarSurface surface = LidarSurface::kObject;
-  castColumn(origin_map.head<2>(), origin_map.z(), std::cos(azimuth_rad), std::sin(azimuth_rad), rings, order, &t,
-             &dz, &surface);
+  castColumn(origin_map.head<2>(), origin_map.z(), std::cos(azimuth_rad), std::sin(azimuth_rad),
+             rings, order, &t, &dz, &surface);
   if (t < 0.0) return std::nullopt;
   return LidarHit{t / rings[0].cos_elev, surface};
 }

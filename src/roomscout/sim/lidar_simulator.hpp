@@ -75,26 +75,26 @@ class LidarSimulator {
 
   /// The first surface along one beam from origin_map [m] with the given map-frame azimuth
   /// and elevation [rad], or nothing within max_range_m. Noise-free.
-  std::optional<LidarHit> castRay(const Eigen::Vector3d& origin_map, double azimuth_rad, double elevation_rad,
-                                  double max_range_m) const;
+  std::optional<LidarHit> castRay(const Eigen::Vector3d& origin_map, double azimuth_rad,
+                                  double elevation_rad, double max_range_m) const;
 
  private:
   struct Ring {
-    double slope;      ///< dz per horizontal metre
+    double slope;  ///< dz per horizontal metre
     double cos_elev;
-    double limit_m;    ///< horizontal distance where it meets a plane or its range ends
+    double limit_m;  ///< horizontal distance where it meets a plane or its range ends
     LidarSurface plane_surface;
-    bool plane_hit;    ///< limit_m is a floor/ceiling hit (else the range ends there)
+    bool plane_hit;  ///< limit_m is a floor/ceiling hit (else the range ends there)
   };
   /// Rings for a sensor at height z_m with the given max range, sorted by limit_m.
-  std::vector<Ring> makeRings(const std::vector<double>& elevations_rad, double z_m, double max_range_m,
-                              std::vector<int>& order) const;
+  std::vector<Ring> makeRings(const std::vector<double>& elevations_rad, double z_m,
+                              double max_range_m, std::vector<int>& order) const;
   /// Casts every ring of one azimuth column. hit_t_m[k] < 0 means no return for ring k, else
   /// it is the horizontal distance to the hit and hit_dz_m[k] the hit's height above the
   /// sensor, exact for horizontal faces (so floor points lie exactly at z = 0).
   void castColumn(const Eigen::Vector2d& origin_m, double z_m, double cos_az, double sin_az,
-                  const std::vector<Ring>& rings, const std::vector<int>& order, double* hit_t_m, double* hit_dz_m,
-                  LidarSurface* hit_surface) const;
+                  const std::vector<Ring>& rings, const std::vector<int>& order, double* hit_t_m,
+                  double* hit_dz_m, LidarSurface* hit_surface) const;
 
   const ColumnWorld& world_;
   LidarOptions options_;

@@ -15,11 +15,14 @@ std::vector<ParameterGroup> PointCloudObserverOptions::groups() {
   std::vector<ParameterRef> map_parameters = map.parameters();
   map_parameters.push_back({"remove_floor_ceiling", &remove_floor_ceiling,
                             "drop returns from the floor and ceiling planes"});
-  return {{"lidar", lidar.parameters()}, {"pointcloud", map_parameters}, {"keyframes", keyframes.parameters()}};
+  return {{"lidar", lidar.parameters()},
+          {"pointcloud", map_parameters},
+          {"keyframes", keyframes.parameters()}};
 }
 
-PointCloudObserver::PointCloudObserver(const WorldModel& world, const PointCloudObserverOptions& options,
-                                       std::uint64_t seed, MapWorker* worker)
+PointCloudObserver::PointCloudObserver(const WorldModel& world,
+                                       const PointCloudObserverOptions& options, std::uint64_t seed,
+                                       MapWorker* worker)
     : options_(options),
       worker_(worker != nullptr && worker->background() ? worker : nullptr),
       columns_(std::make_unique<ColumnWorld>(world)),
@@ -41,7 +44,9 @@ void PointCloudObserver::onStep(const EpisodeSnapshot& snapshot) {
   // Keyframes are chosen, and revolutions placed, at the pose the robot believes it has.
   if (!keyframes_.accept(snapshot.believed())) return;
   if (worker_ != nullptr) {
-    worker_->post([this, truth = snapshot.robot, believed = snapshot.believed()] { insertScan(truth, believed); });
+    worker_->post([this, truth = snapshot.robot, believed = snapshot.believed()] {
+      insertScan(truth, believed);
+    });
   } else {
     insertScan(snapshot.robot, snapshot.believed());
   }
@@ -69,7 +74,8 @@ void PointCloudObserver::insertScan(const Pose2& truth, const Pose2& believed) {
   const bool told_the_truth =
       truth.x_m == believed.x_m && truth.y_m == believed.y_m && truth.yaw_rad == believed.yaw_rad;
   const Eigen::Isometry3d T_believed_sensor =
-      told_the_truth ? scan.T_map_sensor : planar(believed) * planar(truth).inverse() * scan.T_map_sensor;
+      told_the_truth ? scan.T_map_sensor
+                     : planar(believed) * planar(truth).inverse() * scan.T_map_sensor;
   const Eigen::Affine3f T_map_sensor = Eigen::Affine3f(T_believed_sensor.matrix().cast<float>());
   points_map_.clear();
   points_map_.reserve(scan.points_sensor.size());
@@ -78,13 +84,14 @@ void PointCloudObserver::insertScan(const Pose2& truth, const Pose2& believed) {
     points_map_.push_back(T_map_sensor * scan.points_sensor[i]);
   }
   map_.insert(points_map_);
-  update_ms_.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+  update_ms_.push_back(
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
 }
 
 std::string PointCloudObserver::description() const {
   char buf[256];
-  std::snprintf(buf, sizeof buf, "%s; voxel %g m; %s; floor and ceiling %s",
-                "simulated VLP-16", options_.map.voxel_size_m, options_.keyframes.describe().c_str(),
+  std::snprintf(buf, sizeof buf, "%s; voxel %g m; %s; floor and ceiling %s", "simulated VLP-16",
+                options_.map.voxel_size_m, options_.keyframes.describe().c_str(),
                 options_.remove_floor_ceiling ? "removed" : "kept");
   return buf;
 }

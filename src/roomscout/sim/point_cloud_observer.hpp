@@ -10,13 +10,13 @@
 #include <string>
 #include <vector>
 
+#include "roomscout/explorer/map_worker.hpp"
 #include "roomscout/mapping/keyframe_selector.hpp"
 #include "roomscout/mapping/point_cloud_map.hpp"
 #include "roomscout/sim/column_world.hpp"
 #include "roomscout/sim/episode_observer.hpp"
 #include "roomscout/sim/lidar_simulator.hpp"
 #include "roomscout/sim/sensor_noise.hpp"
-#include "roomscout/explorer/map_worker.hpp"
 
 namespace roomscout::sim {
 
@@ -39,8 +39,8 @@ class PointCloudObserver final : public EpisodeObserver {
   /// @param worker casts and inserts the keyframes (borrowed; must outlive the observer);
   ///        null: at once. With a worker, map() and the update times are up to date only
   ///        after onFinish().
-  PointCloudObserver(const WorldModel& world, const PointCloudObserverOptions& options, std::uint64_t seed,
-                     MapWorker* worker = nullptr);
+  PointCloudObserver(const WorldModel& world, const PointCloudObserverOptions& options,
+                     std::uint64_t seed, MapWorker* worker = nullptr);
   ~PointCloudObserver() override;
 
   std::string_view name() const override { return "pointcloud"; }

@@ -37,13 +37,15 @@ void forEachCellInPolygon(const GridGeometry& g, const Polygon& polygon_m, Fn&& 
     for (std::size_t i = 0, j = n - 1; i < n; j = i++) {
       const Vec2& a = q[i];
       const Vec2& b = q[j];
-      if ((a.y() > yc) != (b.y() > yc)) crossings.push_back(a.x() + (yc - a.y()) * (b.x() - a.x()) / (b.y() - a.y()));
+      if ((a.y() > yc) != (b.y() > yc))
+        crossings.push_back(a.x() + (yc - a.y()) * (b.x() - a.x()) / (b.y() - a.y()));
     }
     std::sort(crossings.begin(), crossings.end());
     for (std::size_t k = 0; k + 1 < crossings.size(); k += 2) {
       // cells whose centre x + 0.5 lies in [crossings[k], crossings[k+1])
       const int x0 = std::max(0, static_cast<int>(std::ceil(crossings[k] - 0.5)));
-      const int x1 = std::min(g.width() - 1, static_cast<int>(std::ceil(crossings[k + 1] - 0.5)) - 1);
+      const int x1 =
+          std::min(g.width() - 1, static_cast<int>(std::ceil(crossings[k + 1] - 0.5)) - 1);
       for (int x = x0; x <= x1; ++x) fn(x, row);
     }
   }
@@ -60,7 +62,8 @@ void fillPolygon(cv::Mat& raster, const GridGeometry& g, const Polygon& polygon_
 inline Polygon wallRectangle(const Wall& w) {
   const Vec2 d = w.b_m - w.a_m;
   const double len = d.norm();
-  const Vec2 n = len > 0 ? Vec2(Vec2(-d.y(), d.x()) / len * (w.thickness_m * 0.5)) : Vec2(Vec2::Zero());
+  const Vec2 n =
+      len > 0 ? Vec2(Vec2(-d.y(), d.x()) / len * (w.thickness_m * 0.5)) : Vec2(Vec2::Zero());
   return {w.a_m - n, w.b_m - n, w.b_m + n, w.a_m + n};
 }
 

@@ -10,7 +10,8 @@ namespace roomscout::sim {
 void RobotOptions::validate() const {
   if (!(radius_m > 0.0)) throw OptionError("robot.radius_m must be > 0");
   if (!(max_linear_speed_mps > 0.0)) throw OptionError("robot.max_linear_speed_mps must be > 0");
-  if (!(max_angular_speed_radps > 0.0)) throw OptionError("robot.max_angular_speed_radps must be > 0");
+  if (!(max_angular_speed_radps > 0.0))
+    throw OptionError("robot.max_angular_speed_radps must be > 0");
 }
 
 std::vector<ParameterRef> RobotOptions::parameters() {
@@ -27,7 +28,8 @@ Robot::Robot(const WorldModel& world, const RobotOptions& options, const Pose2& 
 }
 
 bool Robot::step(const VelocityCommand& command, double dt_s) {
-  const double v = std::clamp(command.linear_mps, -options_.max_linear_speed_mps, options_.max_linear_speed_mps);
+  const double v =
+      std::clamp(command.linear_mps, -options_.max_linear_speed_mps, options_.max_linear_speed_mps);
   const double w = std::clamp(command.angular_radps, -options_.max_angular_speed_radps,
                               options_.max_angular_speed_radps);
   // Exact unicycle integration over the step (arc when turning).

@@ -24,7 +24,8 @@ std::pair<Vec2, Vec2> World::bounds() const {
   }
   if (image) {
     include(image->origin_m, 0.0);
-    include(image->origin_m + Vec2(image->solid.cols, image->solid.rows) * image->resolution_m, 0.0);
+    include(image->origin_m + Vec2(image->solid.cols, image->solid.rows) * image->resolution_m,
+            0.0);
   }
   if (!(lo.x() <= hi.x())) return {Vec2::Zero(), Vec2::Zero()};
   return {lo, hi};

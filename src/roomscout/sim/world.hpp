@@ -48,8 +48,8 @@ struct Room {
 /// An occupancy-image world: every pixel the thresholds do not call free is solid at every
 /// height. Pixel (col, row) with row 0 at the top, as in the image file.
 struct ImageWorld {
-  cv::Mat solid;            ///< CV_8U, 255 = solid, 0 = free
-  cv::Mat room_labels;      ///< CV_32S, 0 = no room, k = room id; empty if none given
+  cv::Mat solid;        ///< CV_8U, 255 = solid, 0 = free
+  cv::Mat room_labels;  ///< CV_32S, 0 = no room, k = room id; empty if none given
   double resolution_m = 0.05;
   Vec2 origin_m = Vec2::Zero();  ///< map frame position of the image's lower-left corner
 };
@@ -57,7 +57,7 @@ struct ImageWorld {
 /// A whole world. Geometric worlds fill walls/furniture/rooms; image worlds fill `image`.
 struct World {
   std::string name;
-  std::string source;        ///< where it came from: "builtin:NAME" or a file path
+  std::string source;  ///< where it came from: "builtin:NAME" or a file path
   std::string description;
   Pose2 start;
   bool start_given = false;  ///< false for image worlds until a start pose is chosen

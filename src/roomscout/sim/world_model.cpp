@@ -21,7 +21,8 @@ void WorldModelOptions::validate() const {
 
 std::vector<ParameterRef> WorldModelOptions::parameters() {
   return {
-      {"raster_resolution_m", &raster_resolution_m, "ground-truth raster cell of geometric worlds [m]"},
+      {"raster_resolution_m", &raster_resolution_m,
+       "ground-truth raster cell of geometric worlds [m]"},
       {"laser_height_m", &laser_height_m, "height of the 2D laser plane [m]"},
       {"robot_height_m", &robot_height_m, "objects whose bottom is below this block the robot [m]"},
       {"robot_radius_m", &robot_radius_m, "robot footprint radius [m]"},
@@ -49,7 +50,8 @@ WorldModel::WorldModel(const World& world, const WorldModelOptions& options)
   } else {
     rasterizeGeometry();
   }
-  has_rooms_ = std::any_of(room_labels_.begin(), room_labels_.end(), [](std::int32_t id) { return id != 0; });
+  has_rooms_ = std::any_of(room_labels_.begin(), room_labels_.end(),
+                           [](std::int32_t id) { return id != 0; });
   computeClearance();
   chooseStart();
 }
@@ -60,7 +62,8 @@ void WorldModel::rasterizeGeometry() {
   auto [lo, hi] = world_.bounds();
   constexpr double kPad_m = 0.5;
   // Origin on a multiple of 0.05 m so that map grids of 0.05/0.1 m align with the raster.
-  const Vec2 origin(std::floor((lo.x() - kPad_m) / 0.05) * 0.05, std::floor((lo.y() - kPad_m) / 0.05) * 0.05);
+  const Vec2 origin(std::floor((lo.x() - kPad_m) / 0.05) * 0.05,
+                    std::floor((lo.y() - kPad_m) / 0.05) * 0.05);
   const int width = static_cast<int>(std::ceil((hi.x() + kPad_m - origin.x()) / res));
   const int height = static_cast<int>(std::ceil((hi.y() + kPad_m - origin.y()) / res));
   geometry_ = GridGeometry(origin, res, width, height);
@@ -68,7 +71,8 @@ void WorldModel::rasterizeGeometry() {
   cv::Mat laser = cv::Mat::zeros(height, width, CV_8U);
   cv::Mat robot = cv::Mat::zeros(height, width, CV_8U);
   auto add = [&](const Polygon& poly, double z_min, double z_max) {
-    if (spans(z_min, z_max, options_.laser_height_m)) fillPolygon<std::uint8_t>(laser, geometry_, poly, 1);
+    if (spans(z_min, z_max, options_.laser_height_m))
+      fillPolygon<std::uint8_t>(laser, geometry_, poly, 1);
     if (z_min < options_.robot_height_m) fillPolygon<std::uint8_t>(robot, geometry_, poly, 1);
   };
   for (const Wall& w : world_.walls) add(wallRectangle(w), w.z_min_m, w.z_max_m);
@@ -136,7 +140,8 @@ void WorldModel::chooseStart() {
   for (std::size_t i = 0; i < robot_solid_.size(); ++i) {
     free_mask.data[i] = (robot_solid_[i] || laser_solid_[i]) ? 0 : 255;
   }
-  if (cv::countNonZero(free_mask) == 0) throw InputError(world_.source, "the world has no free space");
+  if (cv::countNonZero(free_mask) == 0)
+    throw InputError(world_.source, "the world has no free space");
 
   if (world_.start_given) {
     start_ = world_.start;
@@ -153,7 +158,8 @@ void WorldModel::chooseStart() {
     const int n = cv::connectedComponentsWithStats(free_mask, labels, stats, centroids, 8, CV_32S);
     int largest = 1;
     for (int k = 2; k < n; ++k) {
-      if (stats.at<int>(k, cv::CC_STAT_AREA) > stats.at<int>(largest, cv::CC_STAT_AREA)) largest = k;
+      if (stats.at<int>(k, cv::CC_STAT_AREA) > stats.at<int>(largest, cv::CC_STAT_AREA))
+        largest = k;
     }
     std::size_t best = 0;
     float best_clearance = -1.0f;

@@ -35,7 +35,9 @@ class WorldModel {
   /// Solid cells in the laser plane (1) and for robot motion (1), row-major over geometry().
   const std::vector<std::uint8_t>& laserSolid() const { return laser_solid_; }
   const std::vector<std::uint8_t>& robotSolid() const { return robot_solid_; }
-  bool blocksLaser(Cell c) const { return !geometry_.contains(c) || laser_solid_[geometry_.index(c)]; }
+  bool blocksLaser(Cell c) const {
+    return !geometry_.contains(c) || laser_solid_[geometry_.index(c)];
+  }
 
   /// Distance from a point to the nearest robot-solid raster cell [m] (accurate to a cell).
   double clearance_m(const Vec2& p_m) const;

@@ -44,11 +44,16 @@ void SlamOptions::validate() const {
 
 std::vector<ParameterRef> SlamOptions::parameters() {
   return {
-      {"mode", &mode, "none (the true pose), icp (MRPT ICP-SLAM) or rbpf (MRPT particle-filter SLAM)"},
-      {"match_distance_m", &match_distance_m, "distance driven before SLAM corrects the pose with a scan [m]"},
-      {"match_angle_deg", &match_angle_deg, "angle turned before SLAM corrects the pose with a scan [deg]"},
-      {"insert_distance_m", &insert_distance_m, "distance driven before a scan is added to the map [m]"},
-      {"insert_angle_deg", &insert_angle_deg, "angle turned before a scan is added to the map [deg]"},
+      {"mode", &mode,
+       "none (the true pose), icp (MRPT ICP-SLAM) or rbpf (MRPT particle-filter SLAM)"},
+      {"match_distance_m", &match_distance_m,
+       "distance driven before SLAM corrects the pose with a scan [m]"},
+      {"match_angle_deg", &match_angle_deg,
+       "angle turned before SLAM corrects the pose with a scan [deg]"},
+      {"insert_distance_m", &insert_distance_m,
+       "distance driven before a scan is added to the map [m]"},
+      {"insert_angle_deg", &insert_angle_deg,
+       "angle turned before a scan is added to the map [deg]"},
       {"particles", &particles, "rbpf: number of particles"},
       {"diverged_ate_m", &diverged_ate_m, "position RMSE above which a run is marked diverged [m]"},
   };
@@ -70,7 +75,8 @@ mrpt::poses::CPose2D toMrpt(const Pose2& p) { return {p.x_m, p.y_m, p.yaw_rad}; 
 /// a then b, b expressed in a's frame.
 Pose2 compose(const Pose2& a, const Pose2& b) {
   const double c = std::cos(a.yaw_rad), s = std::sin(a.yaw_rad);
-  return {a.x_m + c * b.x_m - s * b.y_m, a.y_m + s * b.x_m + c * b.y_m, wrapAngle(a.yaw_rad + b.yaw_rad)};
+  return {a.x_m + c * b.x_m - s * b.y_m, a.y_m + s * b.x_m + c * b.y_m,
+          wrapAngle(a.yaw_rad + b.yaw_rad)};
 }
 
 Pose2 inverse(const Pose2& a) {
@@ -116,7 +122,6 @@ struct Slam::Impl {
     icp.smallestThresholdDist = 0.03;
     icp.corresponding_points_decimation = 3;
   }
-
 };
 
 Slam::Slam(const SlamOptions& options, const Pose2& start, std::uint64_t seed)
@@ -177,7 +182,8 @@ Slam::Slam(const SlamOptions& options, const Pose2& start, std::uint64_t seed)
     }
     s.stamp_base = mrpt::Clock::now() + std::chrono::seconds(1);
   } catch (const std::exception& e) {
-    throw InvalidArgument(std::string("SLAM (") + options.mode + "): MRPT failed to initialise: " + e.what());
+    throw InvalidArgument(std::string("SLAM (") + options.mode +
+                          "): MRPT failed to initialise: " + e.what());
   }
 }
 
@@ -190,7 +196,8 @@ void Slam::update(const LaserScan& scan, const Pose2& odometry) {
   if (n < 2 || !(scan.angle_increment_rad > 0.0)) {
     throw InvalidArgument("SLAM: a scan needs at least two beams and a positive angle increment");
   }
-  if (!std::isfinite(odometry.x_m) || !std::isfinite(odometry.y_m) || !std::isfinite(odometry.yaw_rad)) {
+  if (!std::isfinite(odometry.x_m) || !std::isfinite(odometry.y_m) ||
+      !std::isfinite(odometry.yaw_rad)) {
     throw InvalidArgument("SLAM: the odometry pose is not finite");
   }
 
@@ -199,7 +206,8 @@ void Slam::update(const LaserScan& scan, const Pose2& odometry) {
   s.last_odometry = odometry;
   const auto stamp = s.stamp_base + std::chrono::milliseconds(200 * s.updates);
   mrpt::obs::CActionRobotMovement2D movement;
-  movement.computeFromOdometry(toMrpt(increment), mrpt::obs::CActionRobotMovement2D::TMotionModelOptions());
+  movement.computeFromOdometry(toMrpt(increment),
+                               mrpt::obs::CActionRobotMovement2D::TMotionModelOptions());
   movement.timestamp = stamp;
   mrpt::obs::CActionCollection actions;
   actions.insert(movement);
@@ -233,7 +241,8 @@ void Slam::update(const LaserScan& scan, const Pose2& odometry) {
       s.builder->processActionObservation(actions, frame);
     }
     ++s.updates;
-    const mrpt::math::TPose3D estimate = s.builder->getCurrentPoseEstimation()->getMeanVal().asTPose();
+    const mrpt::math::TPose3D estimate =
+        s.builder->getCurrentPoseEstimation()->getMeanVal().asTPose();
     s.map_from_odom = compose(Pose2{estimate.x, estimate.y, estimate.yaw}, inverse(odometry));
   } catch (const InvalidArgument&) {
     throw;
