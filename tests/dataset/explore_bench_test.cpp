@@ -1,4 +1,4 @@
-// Exploration of real maps made elsewhere (../shared/data, found through ROOMSCOUT_DATA_DIR):
+// Exploration of real maps made elsewhere (the shared data set, see dataset_dir.hpp):
 // the Explore-Bench maps and a HouseExpo plan, read as map_server worlds. These maps are not in the
 // repository. Every method that ends by itself there explores each map to 98 %; rrt and
 // improved_rrt are left out for time (about 6 s an episode; improved_rrt does not end on "loop": a
@@ -8,11 +8,11 @@
 #include <gtest/gtest.h>
 
 #include <cstdint>
-#include <cstdlib>
 #include <filesystem>
 #include <string>
 #include <tuple>
 
+#include "dataset_dir.hpp"
 #include "roomscout/exploration/strategy_registry.hpp"
 #include "roomscout/io/map_server.hpp"
 #include "roomscout/sim/episode.hpp"
@@ -21,11 +21,6 @@ namespace fs = std::filesystem;
 
 namespace roomscout {
 namespace {
-
-fs::path dataDir() {
-  const char* dir = std::getenv("ROOMSCOUT_DATA_DIR");
-  return dir ? fs::path(dir) : fs::path();
-}
 
 /// One episode of `method` with `seed` on a map_server world (the rooms the semantic strategy
 /// reads built as it explores; the others ignore them).
@@ -42,10 +37,9 @@ class ExploreBenchMaps : public ::testing::TestWithParam<std::tuple<std::string,
 
 TEST_P(ExploreBenchMaps, ExploresAtLeast98PercentAndEnds) {
   const auto& [map, method] = GetParam();
-  const fs::path yaml = dataDir() / "floorplans" / "explore_bench" / (map + ".yaml");
-  // The data set is part of the test environment: a missing one is a failure, not a skip.
-  ASSERT_TRUE(fs::exists(yaml)) << "set ROOMSCOUT_DATA_DIR to the shared data folder; not found: "
-                                << yaml;
+  ROOMSCOUT_DATASET_DIR(data);
+  const fs::path yaml = data / "floorplans" / "explore_bench" / (map + ".yaml");
+  ASSERT_TRUE(fs::exists(yaml)) << "not in the data set: " << yaml;
   const sim::EpisodeResult r = explore(yaml, method, 1);
   EXPECT_GE(r.exploration_rate, 0.98) << map << " " << method;
   EXPECT_FALSE(r.timed_out) << map << " " << method;
@@ -68,9 +62,9 @@ class HouseExpoPlans : public ::testing::TestWithParam<std::tuple<std::string, i
 
 TEST_P(HouseExpoPlans, SemanticExploresAtLeast98PercentAndEnds) {
   const auto& [plan, seed] = GetParam();
-  const fs::path yaml = dataDir() / "floorplans" / "houseexpo" / (plan + ".yaml");
-  ASSERT_TRUE(fs::exists(yaml)) << "set ROOMSCOUT_DATA_DIR to the shared data folder; not found: "
-                                << yaml;
+  ROOMSCOUT_DATASET_DIR(data);
+  const fs::path yaml = data / "floorplans" / "houseexpo" / (plan + ".yaml");
+  ASSERT_TRUE(fs::exists(yaml)) << "not in the data set: " << yaml;
   const sim::EpisodeResult r = explore(yaml, "semantic", static_cast<std::uint64_t>(seed));
   EXPECT_GE(r.exploration_rate, 0.98);
   EXPECT_FALSE(r.timed_out);

@@ -1,12 +1,12 @@
-// The room segmentation benchmark of Bormann et al. (ICRA 2016), from ../shared/data (found
-// through ROOMSCOUT_DATA_DIR): the per-room averages must stay at the level we measured.
+// The room segmentation benchmark of Bormann et al. (ICRA 2016), from the shared data set (see
+// dataset_dir.hpp): the per-room averages must stay at the level we measured.
 // The full table is printed by `roomscout segment-eval`.
 
 #include <gtest/gtest.h>
 
-#include <cstdlib>
 #include <filesystem>
 
+#include "dataset_dir.hpp"
 #include "roomscout/io/segmentation_dataset.hpp"
 #include "roomscout/maps/room_segmenter.hpp"
 #include "roomscout/maps/segmentation_score.hpp"
@@ -17,21 +17,16 @@ namespace fs = std::filesystem;
 namespace roomscout {
 namespace {
 
-fs::path segmentationDir() {
-  const char* dir = std::getenv("ROOMSCOUT_DATA_DIR");
-  return dir ? fs::path(dir) / "room_segmentation" : fs::path();
-}
-
 struct Means {
   double recall = 0, precision = 0;
   int maps = 0;
 };
 
-Means evaluate(bool furnished) {
+Means evaluate(const fs::path& folder, bool furnished) {
   const RoomSegmenter segmenter;
   const TopologyBuilder builder;
   Means m;
-  for (const io::SegmentationDatasetMap& map : io::listSegmentationDataset(segmentationDir())) {
+  for (const io::SegmentationDatasetMap& map : io::listSegmentationDataset(folder)) {
     if (furnished && !map.furnished_png) continue;
     const cv::Mat states =
         io::benchmarkStates(io::readGreyImage(furnished ? *map.furnished_png : map.plain_png));
@@ -53,25 +48,19 @@ Means evaluate(bool furnished) {
   return m;
 }
 
-class RoomSegmentationDataset : public ::testing::Test {
- protected:
-  void SetUp() override {
-    // The data set is part of the test environment: a missing one is a failure, not a skip.
-    ASSERT_NE(std::getenv("ROOMSCOUT_DATA_DIR"), nullptr)
-        << "set ROOMSCOUT_DATA_DIR to the shared data folder";
-    ASSERT_TRUE(fs::is_directory(segmentationDir())) << "not found: " << segmentationDir();
-  }
-};
-
-TEST_F(RoomSegmentationDataset, PlainMaps) {
-  const Means m = evaluate(false);
+TEST(RoomSegmentationDataset, PlainMaps) {
+  ROOMSCOUT_DATASET_DIR(data);
+  ASSERT_TRUE(fs::is_directory(data / "room_segmentation")) << "not in the data set: " << data;
+  const Means m = evaluate(data / "room_segmentation", false);
   EXPECT_EQ(m.maps, 10);
   EXPECT_GE(m.recall, 0.97);
   EXPECT_GE(m.precision, 0.95);
 }
 
-TEST_F(RoomSegmentationDataset, FurnishedMaps) {
-  const Means m = evaluate(true);
+TEST(RoomSegmentationDataset, FurnishedMaps) {
+  ROOMSCOUT_DATASET_DIR(data);
+  ASSERT_TRUE(fs::is_directory(data / "room_segmentation")) << "not in the data set: " << data;
+  const Means m = evaluate(data / "room_segmentation", true);
   EXPECT_EQ(m.maps, 10);
   EXPECT_GE(m.recall, 0.92);
   EXPECT_GE(m.precision, 0.95);
