@@ -17,7 +17,7 @@ namespace {
 namespace fs = std::filesystem;
 
 TEST(BenchPlan, ListIsTheSortedProductOfWorldsMethodsAndSeeds) {
-  const std::vector<EpisodeKey> plan = planEpisodes({"b", "a"}, {"rrt", "mmpf", "rrt"}, 2);
+  const std::vector<EpisodeKey> plan = planEpisodes({"b", "a"}, {"rrt", "mmpf", "rrt"}, {1, 2});
   const std::vector<EpisodeKey> expected = {{"a", "mmpf", 1}, {"a", "mmpf", 2}, {"a", "rrt", 1},
                                             {"a", "rrt", 2},  {"b", "mmpf", 1}, {"b", "mmpf", 2},
                                             {"b", "rrt", 1},  {"b", "rrt", 2}};
@@ -28,13 +28,13 @@ TEST(BenchPlan, ShardsPartitionTheListExactly) {
   const std::vector<std::string> worlds = {"small_house", "medium_house", "large_office", "x1",
                                            "x2"};
   const std::vector<std::string> methods = {"rrt", "improved_rrt", "mmpf", "semantic"};
-  const std::vector<EpisodeKey> all = planEpisodes(worlds, methods, 7);
+  const std::vector<EpisodeKey> all = planEpisodes(worlds, methods, {1, 7});
   ASSERT_EQ(all.size(), 5u * 4u * 7u);
   for (int n : {1, 2, 3, 7, 13, 140, 200}) {
     std::multiset<EpisodeKey> union_of_shards;
     std::size_t largest = 0, smallest = all.size();
     for (int i = 1; i <= n; ++i) {
-      const std::vector<EpisodeKey> shard = planEpisodes(worlds, methods, 7, Shard{i, n});
+      const std::vector<EpisodeKey> shard = planEpisodes(worlds, methods, {1, 7}, Shard{i, n});
       largest = std::max(largest, shard.size());
       smallest = std::min(smallest, shard.size());
       // Each shard is the slice position % n == i - 1 of the full list, in its order.
@@ -67,9 +67,28 @@ TEST(BenchPlan, ParseShard) {
 }
 
 TEST(BenchPlan, BadCountsAreOptionErrors) {
-  EXPECT_THROW(planEpisodes({"a"}, {"rrt"}, 0), OptionError);
-  EXPECT_THROW(planEpisodes({}, {"rrt"}, 1), OptionError);
-  EXPECT_THROW(planEpisodes({"a"}, {}, 1), OptionError);
+  EXPECT_THROW(planEpisodes({"a"}, {"rrt"}, {1, 0}), OptionError);
+  EXPECT_THROW(planEpisodes({}, {"rrt"}, {1, 1}), OptionError);
+  EXPECT_THROW(planEpisodes({"a"}, {}, {1, 1}), OptionError);
+}
+
+TEST(BenchPlan, SeedRanges) {
+  EXPECT_EQ(parseSeeds("10").first, 1);
+  EXPECT_EQ(parseSeeds("10").last, 10);
+  EXPECT_EQ(parseSeeds("41-48").first, 41);
+  EXPECT_EQ(parseSeeds("41-48").last, 48);
+  const std::vector<EpisodeKey> plan = planEpisodes({"a"}, {"rrt"}, parseSeeds("5-7"));
+  ASSERT_EQ(plan.size(), 3u);
+  EXPECT_EQ(plan.front().seed, 5u);
+  EXPECT_EQ(plan.back().seed, 7u);
+  for (const char* bad : {"0", "-3", "5-4", "0-2", "", "a", "3-", "-", "1-2-3", "2 "}) {
+    try {
+      parseSeeds(bad);
+      ADD_FAILURE() << "accepted '" << bad << "'";
+    } catch (const OptionError& e) {
+      EXPECT_NE(std::string(e.what()).find("--seeds"), std::string::npos) << e.what();
+    }
+  }
 }
 
 TEST(BenchPlan, SplitList) {

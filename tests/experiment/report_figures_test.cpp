@@ -197,7 +197,7 @@ TEST(ReportWriter, WritesTablesFiguresAndPageFromABench) {
   BenchOptions bench;
   bench.worlds = {world.string()};
   bench.methods = {"nearest_frontier", "mmpf"};
-  bench.seeds = 2;
+  bench.seeds = {1, 2};
   bench.jobs = 2;
   bench.out = dir / "bench";
   bench.settings.max_time_s = 60.0;

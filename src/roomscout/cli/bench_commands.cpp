@@ -88,7 +88,7 @@ std::vector<std::filesystem::path> reportInto(const std::vector<std::filesystem:
 struct BenchArgs {
   std::string worlds;
   std::string methods;
-  int seeds = 1;
+  std::string seeds = "1";
   int jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   std::string out;
   std::string shard;
@@ -103,7 +103,7 @@ int runBenchCommand(const BenchArgs& args) {
   experiment::BenchOptions options;
   options.worlds = experiment::splitList(args.worlds);
   options.methods = experiment::splitList(args.methods);
-  options.seeds = args.seeds;
+  options.seeds = experiment::parseSeeds(args.seeds);
   options.random_starts = args.random_starts;
   options.jobs = args.jobs;
   options.out = args.out;
@@ -151,7 +151,7 @@ Subcommand addBenchCommand(CLI::App& app) {
       ->required();
   cmd->add_option("--methods", args->methods, "comma-separated methods (see `roomscout methods`)")
       ->required();
-  cmd->add_option("--seeds", args->seeds, "seeds 1..N of each world x method")
+  cmd->add_option("--seeds", args->seeds, "seeds of each world x method: N for 1..N, or A-B")
       ->capture_default_str();
   cmd->add_option("--jobs", args->jobs, "episodes run at a time (one thread each)")
       ->capture_default_str();

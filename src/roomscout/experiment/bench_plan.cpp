@@ -77,18 +77,41 @@ Shard parseShard(std::string_view text) {
   return s;
 }
 
+SeedRange parseSeeds(std::string_view text) {
+  const auto number = [](std::string_view t, int& value) {
+    const auto r = std::from_chars(t.data(), t.data() + t.size(), value);
+    return !t.empty() && r.ec == std::errc() && r.ptr == t.data() + t.size();
+  };
+  SeedRange range;
+  const std::size_t dash = text.find('-');
+  const bool ok = dash == std::string_view::npos ? number(text, range.last)
+                                                 : number(text.substr(0, dash), range.first) &&
+                                                       number(text.substr(dash + 1), range.last);
+  if (!ok || range.first < 1 || range.last < range.first) {
+    throw OptionError(
+        "--seeds: expected N (seeds 1..N) or A-B (seeds A..B) with 1 <= A <= B, got '" +
+        std::string(text) + "'");
+  }
+  return range;
+}
+
 std::vector<EpisodeKey> planEpisodes(const std::vector<std::string>& worlds,
-                                     const std::vector<std::string>& methods, int seeds,
-                                     const Shard& shard) {
+                                     const std::vector<std::string>& methods,
+                                     const SeedRange& seeds, const Shard& shard) {
   if (worlds.empty()) throw OptionError("--worlds: no world given");
   if (methods.empty()) throw OptionError("--methods: no method given");
-  if (seeds < 1) throw OptionError("--seeds must be >= 1, got " + std::to_string(seeds));
+  if (seeds.first < 1 || seeds.last < seeds.first) {
+    throw OptionError("--seeds: empty range " + std::to_string(seeds.first) + "-" +
+                      std::to_string(seeds.last));
+  }
   const std::set<std::string> world_set(worlds.begin(), worlds.end());
   const std::set<std::string> method_set(methods.begin(), methods.end());
   std::vector<EpisodeKey> all;
   for (const std::string& w : world_set) {
     for (const std::string& m : method_set) {
-      for (int s = 1; s <= seeds; ++s) all.push_back({w, m, static_cast<std::uint64_t>(s)});
+      for (int s = seeds.first; s <= seeds.last; ++s) {
+        all.push_back({w, m, static_cast<std::uint64_t>(s)});
+      }
     }
   }
   std::vector<EpisodeKey> mine;

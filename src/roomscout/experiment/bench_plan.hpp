@@ -40,12 +40,22 @@ struct Shard {
 /// Parses "I/N" (1 <= I <= N). Throws OptionError naming --shard otherwise.
 Shard parseShard(std::string_view text);
 
-/// Every (world, method, seed) with seeds 1..`seeds`, sorted by world name, method name, seed,
-/// then only the episodes that `shard` holds. Worlds and methods are deduplicated. Throws
-/// OptionError when `seeds` < 1 or a list is empty.
+/// The seeds first..last of every world x method.
+struct SeedRange {
+  int first = 1;
+  int last = 1;
+};
+
+/// Parses "N" (seeds 1..N) or "A-B" (seeds A..B, 1 <= A <= B). Throws OptionError naming
+/// --seeds otherwise.
+SeedRange parseSeeds(std::string_view text);
+
+/// Every (world, method, seed) with the seeds of `seeds`, sorted by world name, method name,
+/// seed, then only the episodes that `shard` holds. Worlds and methods are deduplicated. Throws
+/// OptionError when the range is empty or starts below 1, or a list is empty.
 std::vector<EpisodeKey> planEpisodes(const std::vector<std::string>& worlds,
-                                     const std::vector<std::string>& methods, int seeds,
-                                     const Shard& shard = {});
+                                     const std::vector<std::string>& methods,
+                                     const SeedRange& seeds, const Shard& shard = {});
 
 /// Splits a comma-separated list, trimming blanks and dropping empty items.
 std::vector<std::string> splitList(std::string_view text);

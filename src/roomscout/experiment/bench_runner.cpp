@@ -172,7 +172,8 @@ BenchSummary runBench(const BenchOptions& options,
         const std::lock_guard<std::mutex> lock(mutex);
         ++progress.running;
       }
-      const bool keep_outputs = key.seed == 1;  // the lowest seed keeps explore's outputs
+      // The lowest seed keeps explore's outputs, for the report's figures.
+      const bool keep_outputs = key.seed == static_cast<std::uint64_t>(options.seeds.first);
       const fs::path relative = fs::path(keep_outputs ? "runs" : ".scratch") / key.world /
                                 key.method / ("seed" + std::to_string(key.seed));
       const fs::path dir = options.out / relative;

@@ -19,7 +19,7 @@ namespace roomscout::experiment {
 struct BenchOptions {
   std::vector<std::string> worlds;   ///< built-in names, world/map_server YAML files, folders
   std::vector<std::string> methods;  ///< registered strategy names
-  int seeds = 1;                     ///< seeds 1..seeds
+  SeedRange seeds;                   ///< the seeds of every world x method
   int jobs = 1;                      ///< episodes run at a time (each on one thread)
   std::filesystem::path out;         ///< bench directory: results.jsonl, runs/, tables
   Shard shard;                       ///< the slice of the episode list this process runs

@@ -63,7 +63,7 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-/// MRPT's particle filter draws from one process-wide generator: rbpf sessions take turns and
+/// MRPT's particle filter draws from one process-wide generator: rbpf instances take turns and
 /// reseed it from their own seed, so that each run is repeatable whatever else runs.
 std::mutex& mrptRandomMutex() {
   static std::mutex m;

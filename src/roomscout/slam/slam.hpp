@@ -44,7 +44,7 @@ struct SlamOptions {
   std::vector<ParameterRef> parameters();
 };
 
-/// One SLAM session from a known start pose, whose frame becomes the map frame. Not
+/// One SLAM run from a known start pose, whose frame becomes the map frame. Not
 /// thread-safe; several instances may run on different threads (rbpf's calls into MRPT's
 /// global random generator are serialised and reseeded from `seed`, so a run is repeatable).
 class Slam {
