@@ -9,8 +9,10 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <random>
 #include <sstream>
+#include <variant>
 
 #include "../io/test_support.hpp"
 #include "roomscout/core/errors.hpp"
@@ -40,13 +42,26 @@ TEST(Report, Table1HoldsMeansSdAndSuccessRates) {
   EXPECT_EQ(report.methods,
             (std::vector<std::string>{"rrt", "mmpf", "semantic", "nearest_frontier"}));
 
+  // small_house: semantic finished seed 1 only (seed 2 stopped at 95 %, seed 3 was not run),
+  // so the means are over seed 1 for both methods; the success counts over every episode.
+  EXPECT_EQ(report.reference, "rrt");
+  EXPECT_EQ(report.paired.at("small_house").pairs, 1u);
+  EXPECT_EQ(report.paired.at("small_house").all_pairs, 3u);
+  EXPECT_EQ(report.paired.at("small_house").methods, 2u);
   const MethodStats& rrt = report.table1.at({"small_house", "rrt"});
   EXPECT_EQ(rrt.episodes, 3u);
   EXPECT_EQ(rrt.successes, 3u);
-  EXPECT_DOUBLE_EQ(rrt.t98_s.mean, 110.0);
-  EXPECT_DOUBLE_EQ(*rrt.t98_s.sd, 10.0);
-  EXPECT_DOUBLE_EQ(rrt.l98_m.mean, 22.0);
-  EXPECT_DOUBLE_EQ(*rrt.l98_m.sd, 2.0);
+  EXPECT_EQ(rrt.t98_s.n, 1u);
+  EXPECT_DOUBLE_EQ(rrt.t98_s.mean, 100.0);
+  EXPECT_FALSE(rrt.t98_s.sd.has_value());
+  EXPECT_DOUBLE_EQ(rrt.l98_m.mean, 20.0);
+  EXPECT_DOUBLE_EQ(rrt.own_t98_s.mean, 110.0);  // its own three successes (table1.csv)
+  EXPECT_DOUBLE_EQ(*rrt.own_t98_s.sd, 10.0);
+  EXPECT_DOUBLE_EQ(rrt.own_l98_m.mean, 22.0);
+  EXPECT_DOUBLE_EQ(*rrt.own_l98_m.sd, 2.0);
+  EXPECT_DOUBLE_EQ(rrt.l98_reference_ratio.mean, 1.0);
+  EXPECT_EQ(rrt.semantic_pairs, 1u);  // seed 1: 20 m against semantic's 18
+  EXPECT_EQ(rrt.beats_semantic, 0u);
   EXPECT_DOUBLE_EQ(rrt.revisits.mean, 2.0);
   EXPECT_DOUBLE_EQ(*rrt.revisits.sd, 1.0);
   EXPECT_EQ(rrt.revisits_98.n, 3u);  // up to T98: 0, 1, 2
@@ -56,25 +71,50 @@ TEST(Report, Table1HoldsMeansSdAndSuccessRates) {
   EXPECT_EQ(semantic.successes, 1u);  // 0.95 < 98 %
   EXPECT_EQ(semantic.t98_s.n, 1u);
   EXPECT_FALSE(semantic.t98_s.sd.has_value());
+  EXPECT_DOUBLE_EQ(semantic.l98_reference_ratio.mean, 0.9);
+  EXPECT_DOUBLE_EQ(semantic.t98_reference_ratio.mean, 0.9);
   EXPECT_EQ(semantic.revisits_98.n, 0u);  // records without the count (older benches)
 
+  // The group pairs per world and seed: its only method finished aaa and bbb, not ccc.
   const MethodStats& group = report.table1.at({"houseexpo", "nearest_frontier"});
+  EXPECT_EQ(report.paired.at("houseexpo").pairs, 2u);
+  EXPECT_EQ(report.paired.at("houseexpo").all_pairs, 3u);
   EXPECT_EQ(group.episodes, 3u);
   EXPECT_EQ(group.successes, 2u);
   EXPECT_DOUBLE_EQ(group.t98_s.mean, 60.0);
   EXPECT_NEAR(*group.t98_s.sd, std::sqrt(200.0), 1e-12);
   EXPECT_DOUBLE_EQ(group.l98_m.mean, 12.0);
+  EXPECT_EQ(group.l98_reference_ratio.n, 0u);  // rrt did not run there
+  EXPECT_EQ(group.semantic_pairs, 0u);
 
   const std::string md = table1Markdown(report);
-  EXPECT_TRUE(contains(md, "| RRT | 110.0 ± 10.0 | 171 | 22.0 ± 2.0 | 31 | 3/3 (100 %) |")) << md;
-  EXPECT_TRUE(contains(md, "| Ours (semantic) | 90.0 | 126 | 18.0 | 25 | 1/2 (50 %) |")) << md;
+  EXPECT_TRUE(contains(md,
+                       "| Method | small_house T98 (s) | paper T | small_house L98 (m) | paper L | "
+                       "small_house L98 / RRT | small_house T98 / RRT | small_house beats "
+                       "semantic | small_house success |"))
+      << md;
+  EXPECT_TRUE(contains(md,
+                       "| RRT | 100.0 | 171 | 20.0 | 31 | 1.00× | 1.00× | 0/1 (0 %) | "
+                       "3/3 (100 %) |"))
+      << md;
+  EXPECT_TRUE(contains(md,
+                       "| Ours (semantic) | 90.0 | 126 | 18.0 | 25 | 0.90× | 0.90× | – | "
+                       "1/2 (50 %) |"))
+      << md;
   EXPECT_TRUE(contains(md, "houseexpo (3 worlds) T98 (s)")) << md;
+  EXPECT_TRUE(contains(md,
+                       "Paired (world, seed) pairs, finished by every method of the world "
+                       "out of those run: small_house 1 of 3 (2 methods); medium_house 1 of "
+                       "1 (1 method); houseexpo (3 worlds) 2 of 3 (1 method). Ratios are to "
+                       "RRT (`rrt`)."))
+      << md;
   // No oracle tours attached: no L98 / oracle column, no oracle table.
   EXPECT_FALSE(contains(md, "L98 / oracle |")) << md;
   EXPECT_FALSE(contains(md, "## Oracle reference")) << md;
-  EXPECT_TRUE(contains(md, "60.0 ± 14.1 | 12.0 ± 2.8 | 2/3 (67 %) |")) << md;
-  EXPECT_TRUE(
-      contains(md, "| MMPF | – | 125 | – | 28 | – | 300.0 | 350 | 80.0 | 87 | 1/1 (100 %) |"))
+  EXPECT_TRUE(contains(md, "60.0 ± 14.1 | 12.0 ± 2.8 | – | – | – | 2/3 (67 %) |")) << md;
+  EXPECT_TRUE(contains(md,
+                       "| MMPF | – | 125 | – | 28 | – | – | – | – | 300.0 | 350 | 80.0 | 87 "
+                       "| – | – | – | 1/1 (100 %) |"))
       << md;
   // Revisits, whole episode and up to T98: small_house, medium_house, houseexpo.
   EXPECT_TRUE(contains(md, "| RRT | 2.0 ± 1.0 | 1.0 ± 1.0 | – | – | – | – |")) << md;
@@ -82,13 +122,15 @@ TEST(Report, Table1HoldsMeansSdAndSuccessRates) {
 
   const std::string csv = table1Csv(report);
   // No oracle tours attached: their columns are empty (see report_figures_test.cpp).
-  EXPECT_TRUE(
-      contains(csv, "small_house,0,1,rrt,RRT,3,3,1,3,110,10,3,22,2,3,2,1,171,31,0,,,0,,,3,1,1\n"))
+  // T98 and L98 as in table1.md (paired); own_* over the method's own successes.
+  EXPECT_TRUE(contains(csv,
+                       "small_house,0,1,rrt,RRT,3,3,1,1,100,,1,20,,3,2,1,171,31,0,,,0,,,3,1,"
+                       "1,1,3,3,110,10,3,22,2,rrt,1,1,,1,,1,0\n"))
       << csv;
-  EXPECT_TRUE(
-      contains(csv,
-               "houseexpo,1,3,nearest_frontier,Nearest frontier "
-               "(explore_lite),3,2,0.666667,2,60,14.1421,2,12,2.82843,3,1,1,,,0,,,0,,,0,,\n"))
+  EXPECT_TRUE(contains(csv,
+                       "houseexpo,1,3,nearest_frontier,Nearest frontier "
+                       "(explore_lite),3,2,0.666667,2,60,14.1421,2,12,2.82843,3,1,1,,,0,,,0,,"
+                       ",0,,,2,3,2,60,14.1421,2,12,2.82843,rrt,0,,,,,0,0\n"))
       << csv;
 }
 
@@ -124,8 +166,12 @@ TEST(Report, MergesFilesAndKeepsTheFirstRecordOfAKey) {
   const Report report = buildReport(set);
   const MethodStats& rrt = report.table1.at({"small_house", "rrt"});
   EXPECT_EQ(rrt.episodes, 4u);
-  EXPECT_DOUBLE_EQ(rrt.t98_s.mean, 115.0);
-  EXPECT_NEAR(*rrt.t98_s.sd, std::sqrt(500.0 / 3.0), 1e-12);
+  EXPECT_DOUBLE_EQ(rrt.own_t98_s.mean, 115.0);
+  EXPECT_NEAR(*rrt.own_t98_s.sd, std::sqrt(500.0 / 3.0), 1e-12);
+  // Paired with semantic, which finished seed 1 only (of seeds 1-4).
+  EXPECT_EQ(rrt.t98_s.n, 1u);
+  EXPECT_DOUBLE_EQ(rrt.t98_s.mean, 100.0);
+  EXPECT_EQ(report.paired.at("small_house").all_pairs, 4u);
 }
 
 TEST(Report, PaperNumbersAreTheTablesOfThePaper) {
@@ -206,6 +252,179 @@ std::string record(const char* world, const char* method, int seed, double rate,
   return line.str();
 }
 
+/// A record of a world in `group` ("builtin" for a built-in world); a failure (rate < 98 %)
+/// has no T98 and L98, as a bench writes it.
+std::string groupRecord(const char* world, const char* group, const char* method, int seed,
+                        double rate, std::optional<double> t98, std::optional<double> l98) {
+  const auto number = [](const std::optional<double>& v) {
+    return v ? std::to_string(*v) : std::string("null");
+  };
+  return std::string(R"({"world": ")") + world + R"(", "world_group": ")" + group +
+         R"(", "method": ")" + method + R"(", "seed": )" + std::to_string(seed) +
+         R"(, "exploration_rate": )" + std::to_string(rate) + R"(, "t98_s": )" + number(t98) +
+         R"(, "l98_m": )" + number(l98) + "}\n";
+}
+
+/// small_house, seeds 1-3: improved_rrt drives exactly 0.8 x rrt's L98 in half its T98 on
+/// every seed; nearest_frontier fails the hard seed 3 that the others pass. houseexpo: rrt
+/// fails plan b. medium_house: no (world, seed) pair that both its methods finished.
+struct HardSeed {
+  io::test::TempDir dir;
+  fs::path file;
+  HardSeed() {
+    std::string text;
+    const auto ok = [&](const char* world, const char* method, int seed, double t98, double l98) {
+      text += groupRecord(world, "builtin", method, seed, 0.99, t98, l98);
+    };
+    const double rrt_l[] = {100.0, 110.0, 120.0};
+    const double semantic_l[] = {90.0, 95.0, 96.0};
+    for (int seed = 1; seed <= 3; ++seed) {
+      const double l = rrt_l[seed - 1];
+      ok("small_house", "rrt", seed, 5.0 * l, l);
+      ok("small_house", "improved_rrt", seed, 2.5 * l, 0.8 * l);  // seed 3: 96, semantic's tie
+      ok("small_house", "semantic", seed, 4.0 * semantic_l[seed - 1], semantic_l[seed - 1]);
+    }
+    ok("small_house", "nearest_frontier", 1, 400.0, 85.0);
+    ok("small_house", "nearest_frontier", 2, 500.0, 100.0);
+    text += groupRecord("small_house", "builtin", "nearest_frontier", 3, 0.9, std::nullopt,
+                        std::nullopt);
+    text += groupRecord("a", "houseexpo", "rrt", 1, 0.99, 100.0, 20.0);
+    text += groupRecord("a", "houseexpo", "semantic", 1, 0.99, 90.0, 16.0);
+    text += groupRecord("b", "houseexpo", "rrt", 1, 0.5, std::nullopt, std::nullopt);
+    text += groupRecord("b", "houseexpo", "semantic", 1, 0.99, 50.0, 10.0);
+    ok("medium_house", "rrt", 1, 300.0, 60.0);
+    text += groupRecord("medium_house", "builtin", "semantic", 1, 0.9, std::nullopt, std::nullopt);
+    ok("medium_house", "semantic", 2, 250.0, 50.0);  // rrt did not run seed 2
+    file = dir.write("results.jsonl", text);
+  }
+};
+
+TEST(ReportPairing, MeansAreOverThePairsEveryMethodFinished) {
+  const HardSeed data;
+  const Report report = buildReport(loadResults({data.file}));
+  EXPECT_EQ(report.reference, "rrt");
+  const PairedRow& small = report.paired.at("small_house");
+  EXPECT_EQ(small.methods, 4u);
+  EXPECT_EQ(small.pairs, 2u);  // seeds 1 and 2: nearest_frontier failed seed 3
+  EXPECT_EQ(small.all_pairs, 3u);
+
+  // Seed 3 is out of every method's means, also of those that finished it ...
+  const MethodStats& rrt = report.table1.at({"small_house", "rrt"});
+  EXPECT_EQ(rrt.l98_m.n, 2u);
+  EXPECT_DOUBLE_EQ(rrt.l98_m.mean, 105.0);
+  EXPECT_DOUBLE_EQ(rrt.t98_s.mean, 525.0);
+  EXPECT_DOUBLE_EQ(rrt.own_l98_m.mean, 110.0);
+  const MethodStats& semantic = report.table1.at({"small_house", "semantic"});
+  EXPECT_DOUBLE_EQ(semantic.l98_m.mean, 92.5);
+  const MethodStats& frontier = report.table1.at({"small_house", "nearest_frontier"});
+  EXPECT_EQ(frontier.l98_m.n, 2u);
+  EXPECT_DOUBLE_EQ(frontier.l98_m.mean, 92.5);
+  // ... but in the success counts.
+  EXPECT_EQ(frontier.episodes, 3u);
+  EXPECT_EQ(frontier.successes, 2u);
+  EXPECT_EQ(rrt.successes, 3u);
+
+  // Ratios are per pair: 0.8 x rrt's L98 and 0.5 x its T98 on the same seed.
+  const MethodStats& improved = report.table1.at({"small_house", "improved_rrt"});
+  EXPECT_EQ(improved.l98_reference_ratio.n, 2u);
+  EXPECT_NEAR(improved.l98_reference_ratio.mean, 0.8, 1e-12);
+  EXPECT_NEAR(improved.t98_reference_ratio.mean, 0.5, 1e-12);
+  EXPECT_DOUBLE_EQ(rrt.l98_reference_ratio.mean, 1.0);
+  EXPECT_NEAR(frontier.l98_reference_ratio.mean, (85.0 / 100.0 + 100.0 / 110.0) / 2.0, 1e-12);
+
+  // Beats semantic: over the pairs both finished (seed 3 too where both did), ties not counted.
+  EXPECT_EQ(rrt.semantic_pairs, 3u);
+  EXPECT_EQ(rrt.beats_semantic, 0u);
+  EXPECT_EQ(improved.semantic_pairs, 3u);
+  EXPECT_EQ(improved.beats_semantic, 2u);  // 80 < 90, 88 < 95, 96 = 96
+  EXPECT_EQ(frontier.semantic_pairs, 2u);
+  EXPECT_EQ(frontier.beats_semantic, 1u);  // 85 < 90, 100 > 95
+  EXPECT_EQ(semantic.semantic_pairs, 0u);
+
+  // The group pairs per world and seed: plan b, which rrt failed, is out.
+  EXPECT_EQ(report.paired.at("houseexpo").pairs, 1u);
+  EXPECT_EQ(report.paired.at("houseexpo").all_pairs, 2u);
+  EXPECT_DOUBLE_EQ(report.table1.at({"houseexpo", "semantic"}).l98_m.mean, 16.0);
+  EXPECT_DOUBLE_EQ(report.table1.at({"houseexpo", "semantic"}).l98_reference_ratio.mean, 0.8);
+  EXPECT_EQ(report.table1.at({"houseexpo", "rrt"}).beats_semantic, 0u);
+  EXPECT_EQ(report.table1.at({"houseexpo", "rrt"}).semantic_pairs, 1u);
+
+  // medium_house: no pair, so no means.
+  EXPECT_EQ(report.paired.at("medium_house").pairs, 0u);
+  EXPECT_EQ(report.table1.at({"medium_house", "semantic"}).l98_m.n, 0u);
+
+  const std::string md = table1Markdown(report);
+  EXPECT_TRUE(contains(md,
+                       "| Improved RRT | 262.5 ± 17.7 | 162 | 84.0 ± 5.7 | 27 | 0.80× | "
+                       "0.50× | 2/3 (67 %) | 3/3 (100 %) |"))
+      << md;
+  EXPECT_TRUE(contains(md,
+                       "| Nearest frontier (explore_lite) | 450.0 ± 70.7 | – | 92.5 ± 10.6 | "
+                       "– | 0.88× | 0.85× | 1/2 (50 %) | 2/3 (67 %) |"))
+      << md;
+  EXPECT_TRUE(contains(md,
+                       "| Ours (semantic) | 370.0 ± 14.1 | 126 | 92.5 ± 3.5 | 25 | 0.88× | "
+                       "0.71× | – | 3/3 (100 %) |"))
+      << md;
+  // medium_house columns of rrt: the cell says there is no shared pair.
+  EXPECT_TRUE(contains(md,
+                       "| 3/3 (100 %) | no shared pair | 593 | no shared pair | 131 | – | – | "
+                       "– | 1/1 (100 %) |"))
+      << md;
+  EXPECT_TRUE(contains(md,
+                       "small_house 2 of 3 (4 methods); medium_house 0 of 2 (2 methods); "
+                       "houseexpo (2 worlds) 1 of 2 (2 methods). Ratios are to RRT (`rrt`). "
+                       "Beats semantic: k/n where n counts the (world, seed) pairs both the "
+                       "method and semantic finished"))
+      << md;
+
+  // The HTML page says the same: its caption names the pairing and the reference.
+  const plots::HtmlPage page = reportPage(report, {});
+  ASSERT_FALSE(page.sections.empty());
+  bool caption = false, pairing = false;
+  for (const plots::HtmlBlock& block : page.sections[0].blocks) {
+    if (const auto* t = std::get_if<plots::HtmlTable>(&block)) {
+      caption = caption || contains(t->caption,
+                                    "the (world, seed) pairs every method of the world finished "
+                                    "(small_house 2 of 3, medium_house 0 of 2, houseexpo (2 "
+                                    "worlds) 1 of 2); ratios to RRT on the same pairs; beats "
+                                    "semantic: share of the pairs");
+    } else if (const auto* p = std::get_if<plots::HtmlParagraph>(&block)) {
+      pairing = pairing || contains(p->text, "small_house 2 of 3 (4 methods)");
+    }
+  }
+  EXPECT_TRUE(caption);
+  EXPECT_TRUE(pairing);
+}
+
+TEST(ReportPairing, WithoutRrtTheFirstMethodIsTheReference) {
+  const io::test::TempDir dir;
+  const fs::path file = dir.write(
+      "results.jsonl", groupRecord("small_house", "builtin", "topo", 1, 0.99, 100, 50) +
+                           groupRecord("small_house", "builtin", "mmpf", 1, 0.99, 80, 40));
+  const Report report = buildReport(loadResults({file}));
+  EXPECT_EQ(report.reference, "mmpf");
+  EXPECT_FALSE(report.hasSemantic());
+  EXPECT_DOUBLE_EQ(report.table1.at({"small_house", "topo"}).l98_reference_ratio.mean, 1.25);
+  const std::string md = table1Markdown(report);
+  EXPECT_TRUE(contains(md, "small_house L98 / MMPF")) << md;
+  EXPECT_TRUE(contains(md, "Ratios are to MMPF (`mmpf`), the first method of the table")) << md;
+  EXPECT_FALSE(contains(md, "beats semantic")) << md;
+}
+
+TEST(ReportPairing, MethodsAreInThePapersOrderThenTheOthers) {
+  const io::test::TempDir dir;
+  std::string text;
+  for (const char* method : {"zzz_custom", "semantic_score_only", "semantic", "semantic_paper",
+                             "nearest_frontier", "rrt", "semantic_sampling_only", "aaa_custom"})
+    text += groupRecord("small_house", "builtin", method, 1, 0.99, 100, 50);
+  const Report report = buildReport(loadResults({dir.write("results.jsonl", text)}));
+  EXPECT_EQ(report.methods,
+            (std::vector<std::string>{"rrt", "semantic_paper", "semantic", "nearest_frontier",
+                                      "semantic_sampling_only", "semantic_score_only", "aaa_custom",
+                                      "zzz_custom"}));
+}
+
 const std::string kIcp =
     R"(, "options": {"robot": {"radius_m": 0.1}, "noise": {"profile": "tb3"}, )"
     R"("slam": {"mode": "icp", "diverged_ate_m": 1.0}})";
@@ -274,11 +493,19 @@ TEST(ReportSettings, TablesOneToThreeHoldTheMainSettingOnly) {
   const MethodStats& rrt = report.table1.at({"small_house", "rrt"});
   EXPECT_EQ(rrt.episodes, 2u);
   EXPECT_EQ(rrt.successes, 2u);
-  EXPECT_DOUBLE_EQ(rrt.t98_s.mean, 110.0);
-  EXPECT_DOUBLE_EQ(rrt.l98_m.mean, 22.0);
+  // mmpf ran seed 1 only: the noise-free seed 1 is the one pair; the noise and SLAM episodes
+  // of the same keys do not pair with it.
+  EXPECT_DOUBLE_EQ(rrt.t98_s.mean, 100.0);
+  EXPECT_DOUBLE_EQ(rrt.l98_m.mean, 20.0);
+  EXPECT_DOUBLE_EQ(rrt.own_t98_s.mean, 110.0);
+  EXPECT_DOUBLE_EQ(rrt.own_l98_m.mean, 22.0);
   EXPECT_EQ(report.methods, (std::vector<std::string>{"rrt", "mmpf"}));
   const std::string md = table1Markdown(report);
-  EXPECT_TRUE(contains(md, "| RRT | 110.0 ± 14.1 | 171 | 22.0 ± 2.8 | 31 | 2/2 (100 %) |")) << md;
+  EXPECT_TRUE(contains(md, "| RRT | 100.0 | 171 | 20.0 | 31 | 1.00× | 1.00× | 2/2 (100 %) |"))
+      << md;
+  EXPECT_TRUE(contains(md, "| MMPF | 90.0 | 125 | 18.0 | 28 | 0.90× | 0.90× | 1/1 (100 %) |"))
+      << md;
+  EXPECT_FALSE(contains(md, "beats semantic")) << md;  // no semantic episodes
   EXPECT_TRUE(contains(md, "3 episodes from `")) << md;
   EXPECT_TRUE(contains(md,
                        "`, and 3 episodes under noise tb3, slam icp; 1 episode under noise "

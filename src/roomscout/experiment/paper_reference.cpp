@@ -77,12 +77,14 @@ struct MethodInfo {
   const char* label;
 };
 
-// The paper's order, then the other methods of the registry.
+// The paper's order, with semantic_paper right before semantic, then the other methods of the
+// registry (nearest_frontier, then the two ablations of semantic).
 constexpr MethodInfo kMethods[] = {
     {"rrt", "RRT"},
     {"improved_rrt", "Improved RRT"},
     {"mmpf", "MMPF"},
     {"topo", "TOPO"},
+    {"semantic_paper", "Ours (semantic_paper)"},
     {"semantic", "Ours (semantic)"},
     {"nearest_frontier", "Nearest frontier (explore_lite)"},
     {"semantic_sampling_only", "Ours, sampling only (ablation)"},

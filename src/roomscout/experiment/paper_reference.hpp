@@ -45,8 +45,9 @@ const std::vector<PaperMapTypesRow>& paperTable2();
 /// "MMPF", "TOPO", "Ours (semantic)"), a readable name for the others.
 std::string methodLabel(std::string_view method);
 
-/// Sort rank of a method in tables: the paper's order, then the other known methods, then
-/// unknown ones (rank 100; ties broken by name).
+/// Sort rank of a method in tables: the paper's order (rrt, improved_rrt, mmpf, topo,
+/// semantic_paper, semantic), then nearest_frontier, semantic_sampling_only and
+/// semantic_score_only, then unknown ones (rank 100; ties broken by name).
 int methodRank(std::string_view method);
 
 /// Sort rank of a built-in world in tables: small_house, medium_house, large_office; others 100.

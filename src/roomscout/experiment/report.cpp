@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <set>
 #include <sstream>
@@ -277,6 +278,62 @@ SettingComparison compareSettings(const std::vector<EpisodeSummary>& episodes,
   return table;
 }
 
+/// A successful episode with the numbers Table I pairs: T98 and L98.
+bool finished(const EpisodeSummary* e) { return e && e->succeeded() && e->t98_s && e->l98_m; }
+
+/// Table I's paired numbers (see PairedRow and MethodStats) from every row's episodes by
+/// (world, seed) and method; report.table1 holds a cell for every (row, method) with episodes.
+void pairEpisodes(
+    const std::map<std::string, std::map<std::pair<std::string, std::uint64_t>,
+                                         std::map<std::string, const EpisodeSummary*>>>& by_pair,
+    const std::map<std::string, std::set<std::string>>& row_methods, Report& report) {
+  for (const auto& [row, pairs] : by_pair) {
+    const std::set<std::string>& methods = row_methods.at(row);
+    PairedRow& paired = report.paired[row];
+    paired.methods = methods.size();
+    paired.all_pairs = pairs.size();
+    struct Samples {
+      std::vector<double> t98, l98, l98_ratio, t98_ratio, oracle_ratio;
+    };
+    std::map<std::string, Samples> samples;
+    for (const auto& [world_seed, episodes] : pairs) {
+      const auto semantic = episodes.find("semantic");
+      if (semantic != episodes.end() && finished(semantic->second)) {
+        for (const auto& [method, e] : episodes) {
+          if (method == "semantic" || !finished(e)) continue;
+          MethodStats& s = report.table1.at({row, method});
+          ++s.semantic_pairs;
+          if (*e->l98_m < *semantic->second->l98_m) ++s.beats_semantic;
+        }
+      }
+      if (episodes.size() != methods.size() ||
+          !std::all_of(episodes.begin(), episodes.end(),
+                       [](const auto& m) { return finished(m.second); }))
+        continue;
+      ++paired.pairs;
+      const auto reference = episodes.find(report.reference);
+      const EpisodeSummary* ref = reference == episodes.end() ? nullptr : reference->second;
+      for (const auto& [method, e] : episodes) {
+        Samples& c = samples[method];
+        c.t98.push_back(*e->t98_s);
+        c.l98.push_back(*e->l98_m);
+        if (ref && *ref->l98_m > 0.0) c.l98_ratio.push_back(*e->l98_m / *ref->l98_m);
+        if (ref && *ref->t98_s > 0.0) c.t98_ratio.push_back(*e->t98_s / *ref->t98_s);
+        if (e->oracle && e->oracle->length_m > 0.0)
+          c.oracle_ratio.push_back(*e->l98_m / e->oracle->length_m);
+      }
+    }
+    for (const auto& [method, c] : samples) {
+      MethodStats& s = report.table1.at({row, method});
+      s.t98_s = Stat::of(c.t98);
+      s.l98_m = Stat::of(c.l98);
+      s.l98_reference_ratio = Stat::of(c.l98_ratio);
+      s.t98_reference_ratio = Stat::of(c.t98_ratio);
+      s.l98_oracle_ratio = Stat::of(c.oracle_ratio);
+    }
+  }
+}
+
 }  // namespace
 
 EpisodeSummary summarizeRecord(const nlohmann::json& record, const std::string& where,
@@ -430,9 +487,14 @@ Report buildReport(const ResultSet& results) {
   std::set<std::string> methods;
   struct Samples {
     std::size_t episodes = 0, successes = 0;
-    std::vector<double> t98, l98, revisits, revisits_98, ratio;
+    std::vector<double> own_t98, own_l98, revisits, revisits_98;
   };
   std::map<std::pair<std::string, std::string>, Samples> cells;
+  // row -> (world, seed) -> method -> its episode, for pairing the methods' episodes
+  std::map<std::string, std::map<std::pair<std::string, std::uint64_t>,
+                                 std::map<std::string, const EpisodeSummary*>>>
+      by_pair;
+  std::map<std::string, std::set<std::string>> row_methods;
   // (world, method) -> distinct (final rate, T98, L98) of its seeds, and its episode count
   using Outcome = std::tuple<double, std::optional<double>, std::optional<double>>;
   std::map<std::pair<std::string, std::string>, std::pair<std::set<Outcome>, std::size_t>> outcomes;
@@ -455,20 +517,21 @@ Report buildReport(const ResultSet& results) {
     r.first = is_group;
     r.second.insert(e.key.world);
     methods.insert(e.key.method);
+    row_methods[row].insert(e.key.method);
+    by_pair[row][{e.key.world, e.key.seed}][e.key.method] = &e;
     Samples& c = cells[{row, e.key.method}];
     ++c.episodes;
-    if (e.succeeded()) ++c.successes;
-    if (e.t98_s) c.t98.push_back(*e.t98_s);
-    if (e.l98_m) c.l98.push_back(*e.l98_m);
+    if (e.succeeded()) {
+      ++c.successes;
+      if (e.t98_s) c.own_t98.push_back(*e.t98_s);
+      if (e.l98_m) c.own_l98.push_back(*e.l98_m);
+    }
     if (e.revisits) c.revisits.push_back(*e.revisits);
     if (e.revisits_98) c.revisits_98.push_back(*e.revisits_98);
     auto& o = outcomes[{e.key.world, e.key.method}];
     o.first.emplace(e.exploration_rate, e.t98_s, e.l98_m);
     ++o.second;
-    if (e.oracle) {
-      oracles[row].emplace(std::pair{e.key.world, e.world_setup}, *e.oracle);
-      if (e.l98_m && e.oracle->length_m > 0.0) c.ratio.push_back(*e.l98_m / e.oracle->length_m);
-    }
+    if (e.oracle) oracles[row].emplace(std::pair{e.key.world, e.world_setup}, *e.oracle);
     auto& built = report.map_types[e.key.method];
     for (std::size_t i = 0; i < types.size(); ++i) {
       const auto it = e.maps.find(types[i]);
@@ -486,16 +549,20 @@ Report buildReport(const ResultSet& results) {
   for (const auto& [name, r] : rows) report.rows.push_back({name, r.first, r.second.size()});
   sortRows(report.rows);
   report.methods = sortedMethods(methods);
+  if (!report.methods.empty()) {
+    const bool rrt = methods.contains("rrt");
+    report.reference = rrt ? std::string("rrt") : report.methods.front();
+  }
   for (const auto& [key, c] : cells) {
     MethodStats& s = report.table1[key];
     s.episodes = c.episodes;
     s.successes = c.successes;
-    s.t98_s = Stat::of(c.t98);
-    s.l98_m = Stat::of(c.l98);
+    s.own_t98_s = Stat::of(c.own_t98);
+    s.own_l98_m = Stat::of(c.own_l98);
     s.revisits = Stat::of(c.revisits);
     s.revisits_98 = Stat::of(c.revisits_98);
-    s.l98_oracle_ratio = Stat::of(c.ratio);
   }
+  pairEpisodes(by_pair, row_methods, report);
   // A row's cell repeats itself when each of its worlds run with several seeds had one outcome.
   std::map<std::pair<std::string, std::string>, std::pair<bool, bool>>
       repeats;  // (several, all same)
@@ -530,6 +597,10 @@ Report buildReport(const ResultSet& results) {
     s.viewpoints = Stat::of(viewpoints);
   }
   return report;
+}
+
+bool Report::hasSemantic() const {
+  return std::find(methods.begin(), methods.end(), "semantic") != methods.end();
 }
 
 std::vector<std::string> Report::methodsSameEverySeed() const {
@@ -576,13 +647,43 @@ std::string sameEverySeedLine(const Report& report) {
 
 std::string table1Description() {
   return "T98 [s] and L98 [m]: simulated time and distance driven when the exploration rate "
-         "first reached 98 %, mean ± sample standard deviation over the episodes that reached "
-         "it. Success: episodes whose final exploration rate is ≥ 98 % (and, with SLAM, whose "
-         "pose estimate did not diverge). *Paper*: the paper's Table I (T s, L m). L98 / oracle "
-         "(when the worlds could be loaded): each episode's L98 "
-         "divided by the length of the full-knowledge oracle tour of its world (see Oracle "
-         "reference), averaged. A group of worlds (world files of one folder, e.g. houseexpo) "
-         "pools every world × seed episode.";
+         "first reached 98 %, mean ± sample standard deviation over the paired episodes of the "
+         "world: the (world, seed) pairs that every method run on it finished (final "
+         "exploration rate ≥ 98 % and, with SLAM, a pose estimate that did not diverge). Every "
+         "method's mean is thus over the same runs: a method that fails the hardest seeds does "
+         "not look shorter for it, and a world where no pair was finished by all says \"no "
+         "shared pair\". L98 / and T98 / the reference method: the mean over the paired "
+         "episodes of the method's L98 (T98) divided by the reference's on the same world and "
+         "seed. Beats semantic: of the (world, seed) pairs that both the method and semantic "
+         "finished, the share on which the method drove a shorter L98 (a tie does not count; "
+         "– for semantic itself). Success: every episode of the method, k/n (%), whether "
+         "paired or not. *Paper*: the paper's Table I (T s, L m). L98 / oracle (when the worlds "
+         "could be loaded): each paired episode's L98 divided by the length of the "
+         "full-knowledge oracle tour of its world (see Oracle reference), averaged. A group of "
+         "worlds (world files of one folder, e.g. houseexpo) pools every world × seed episode "
+         "and pairs them per world and seed.";
+}
+
+std::string pairingLine(const Report& report) {
+  if (report.rows.empty()) return {};
+  std::string text =
+      "Paired (world, seed) pairs, finished by every method of the world out of "
+      "those run: ";
+  for (const ReportRow& row : report.rows) {
+    const auto it = report.paired.find(row.name);
+    const PairedRow p = it == report.paired.end() ? PairedRow{} : it->second;
+    text += (&row == &report.rows.front() ? "" : "; ") + rowTitle(row) + " " +
+            std::to_string(p.pairs) + " of " + std::to_string(p.all_pairs) + " (" +
+            std::to_string(p.methods) + (p.methods == 1 ? " method)" : " methods)");
+  }
+  text += ". Ratios are to " + methodLabel(report.reference) + " (`" + report.reference + "`)";
+  text += report.reference == "rrt" ? "." : ", the first method of the table (no rrt episodes).";
+  if (report.hasSemantic()) {
+    text +=
+        " Beats semantic: k/n where n counts the (world, seed) pairs both the method and "
+        "semantic finished and k those on which the method's L98 is shorter.";
+  }
+  return text;
 }
 
 std::string revisitsDescription() {
@@ -625,8 +726,25 @@ std::string table3Description() {
 
 plots::HtmlTable table1Cells(const Report& report) {
   plots::HtmlTable table;
-  table.caption = "Table I: exploration time and trajectory length";
+  const std::string reference = methodLabel(report.reference);
+  table.caption =
+      "Table I: exploration time and trajectory length, means over the paired "
+      "episodes, the (world, seed) pairs every method of the world finished";
+  for (const ReportRow& row : report.rows) {
+    const auto it = report.paired.find(row.name);
+    const PairedRow p = it == report.paired.end() ? PairedRow{} : it->second;
+    table.caption += (&row == &report.rows.front() ? " (" : ", ") + rowTitle(row) + " " +
+                     std::to_string(p.pairs) + " of " + std::to_string(p.all_pairs);
+  }
+  table.caption += std::string(report.rows.empty() ? "" : ")") + "; ratios to " + reference +
+                   " on the same pairs";
+  if (report.hasSemantic()) {
+    table.caption +=
+        "; beats semantic: share of the pairs it and semantic both finished on "
+        "which its L98 is shorter";
+  }
   const bool oracle = report.hasOracle();
+  const bool semantic = report.hasSemantic();
   table.header = {"Method"};
   for (const ReportRow& row : report.rows) {
     const bool paper = paperColumns(row);
@@ -635,7 +753,10 @@ plots::HtmlTable table1Cells(const Report& report) {
     if (paper) table.header.push_back("paper T");
     table.header.push_back(t + " L98 (m)");
     if (paper) table.header.push_back("paper L");
+    table.header.push_back(t + " L98 / " + reference);
+    table.header.push_back(t + " T98 / " + reference);
     if (oracle) table.header.push_back(t + " L98 / oracle");
+    if (semantic) table.header.push_back(t + " beats semantic");
     table.header.push_back(t + " success");
   }
   for (const std::string& method : report.methods) {
@@ -645,11 +766,24 @@ plots::HtmlTable table1Cells(const Report& report) {
       const auto it = report.table1.find({row.name, method});
       const std::optional<PaperTimeLength> paper = paperTable1(row.name, method);
       const bool has = it != report.table1.end();
-      cells.push_back(has ? meanSd(it->second.t98_s) : "–");
+      const auto paired = report.paired.find(row.name);
+      const bool shared = paired != report.paired.end() && paired->second.pairs > 0;
+      // A mean over no episodes would read as a number; the cell says why there is none.
+      const auto mean = [&](const Stat& stat) {
+        return !has ? std::string("–") : shared ? meanSd(stat) : std::string("no shared pair");
+      };
+      cells.push_back(mean(has ? it->second.t98_s : Stat{}));
       if (paper_cols) cells.push_back(paper ? format("%.0f", paper->t_s) : "–");
-      cells.push_back(has ? meanSd(it->second.l98_m) : "–");
+      cells.push_back(mean(has ? it->second.l98_m : Stat{}));
       if (paper_cols) cells.push_back(paper ? format("%.0f", paper->l_m) : "–");
+      cells.push_back(has ? ratioText(it->second.l98_reference_ratio) : "–");
+      cells.push_back(has ? ratioText(it->second.t98_reference_ratio) : "–");
       if (oracle) cells.push_back(has ? ratioText(it->second.l98_oracle_ratio) : "–");
+      if (semantic) {
+        const bool pairs = has && method != "semantic" && it->second.semantic_pairs > 0;
+        cells.push_back(pairs ? successText(it->second.beats_semantic, it->second.semantic_pairs)
+                              : "–");
+      }
       cells.push_back(has ? successText(it->second.successes, it->second.episodes) : "–");
     }
     table.rows.push_back(std::move(cells));
@@ -826,9 +960,11 @@ std::string slamDescription() {
 std::string table1Markdown(const Report& report) {
   const std::string same = sameEverySeedLine(report);
   const std::string starts = startPosesLine(report);
-  const std::string intro = "# Table I: exploration time and trajectory length\n\n" +
-                            table1Description() + "\n\n" + (same.empty() ? "" : same + "\n\n") +
-                            (starts.empty() ? "" : starts + "\n\n") + sourcesLine(report) + ".\n\n";
+  const std::string pairing = pairingLine(report);
+  const std::string intro =
+      "# Table I: exploration time and trajectory length\n\n" + table1Description() + "\n\n" +
+      (pairing.empty() ? "" : pairing + "\n\n") + (same.empty() ? "" : same + "\n\n") +
+      (starts.empty() ? "" : starts + "\n\n") + sourcesLine(report) + ".\n\n";
   if (report.rows.empty()) return intro + "No episodes.\n";
   plots::HtmlTable table = table1Cells(report);
   table.caption.clear();
@@ -848,7 +984,11 @@ std::string table1Csv(const Report& report) {
   csv << "world,is_group,worlds,method,method_label,episodes,successes,success_rate,t98_n,t98_"
          "mean_s,t98_sd_s,l98_n,l98_mean_m,l98_sd_m,revisits_n,revisits_mean,revisits_sd,paper_"
          "t_s,paper_l_m,oracle_worlds,oracle_l_mean_m,oracle_l_sd_m,l98_oracle_ratio_n,l98_"
-         "oracle_ratio_mean,l98_oracle_ratio_sd,revisits_98_n,revisits_98_mean,revisits_98_sd\n";
+         "oracle_ratio_mean,l98_oracle_ratio_sd,revisits_98_n,revisits_98_mean,revisits_98_sd,"
+         "pairs,"
+         "all_pairs,own_t98_n,own_t98_mean_s,own_t98_sd_s,own_l98_n,own_l98_mean_m,own_l98_sd_m,"
+         "reference,l98_reference_ratio_n,l98_reference_ratio_mean,l98_reference_ratio_sd,t98_"
+         "reference_ratio_mean,t98_reference_ratio_sd,semantic_pairs,beats_semantic\n";
   for (const ReportRow& row : report.rows) {
     const auto oracle = report.oracle.find(row.name);
     for (const std::string& method : report.methods) {
@@ -875,7 +1015,19 @@ std::string table1Csv(const Report& report) {
       }
       csv << "," << s.l98_oracle_ratio.n << "," << mean(s.l98_oracle_ratio) << ","
           << csvNumber(s.l98_oracle_ratio.sd) << "," << s.revisits_98.n << ","
-          << mean(s.revisits_98) << "," << csvNumber(s.revisits_98.sd) << "\n";
+          << mean(s.revisits_98) << "," << csvNumber(s.revisits_98.sd) << ",";
+      const auto paired = report.paired.find(row.name);
+      if (paired != report.paired.end()) {
+        csv << paired->second.pairs << "," << paired->second.all_pairs;
+      } else {
+        csv << "0,0";
+      }
+      csv << "," << s.own_t98_s.n << "," << mean(s.own_t98_s) << "," << csvNumber(s.own_t98_s.sd)
+          << "," << s.own_l98_m.n << "," << mean(s.own_l98_m) << "," << csvNumber(s.own_l98_m.sd)
+          << "," << report.reference << "," << s.l98_reference_ratio.n << ","
+          << mean(s.l98_reference_ratio) << "," << csvNumber(s.l98_reference_ratio.sd) << ","
+          << mean(s.t98_reference_ratio) << "," << csvNumber(s.t98_reference_ratio.sd) << ","
+          << s.semantic_pairs << "," << s.beats_semantic << "\n";
     }
   }
   return csv.str();

@@ -126,20 +126,45 @@ struct ReportRow {
 };
 
 /// Table I's numbers for one row x method. Group rows pool every world x seed episode.
+/// T98, L98 and the ratios are over the row's paired episodes (see PairedRow): the (world,
+/// seed) pairs that every method of the row finished, so that each method's mean is over the
+/// same runs as every other's.
 struct MethodStats {
   std::size_t episodes = 0;
   std::size_t successes = 0;  ///< EpisodeSummary::succeeded(): final rate >= 98 %, not diverged
-  Stat t98_s;                 ///< over the episodes that reached 98 %
-  Stat l98_m;
+  Stat t98_s;                 ///< over the row's paired episodes
+  Stat l98_m;                 ///< over the row's paired episodes
+  /// T98 and L98 over this method's own successful episodes, whatever the other methods did
+  /// (table1.csv only: a method that fails the hard runs looks faster here).
+  Stat own_t98_s;
+  Stat own_l98_m;
+  /// Per paired episode, L98 (T98) over the reference method's (Report::reference) on the same
+  /// world and seed; none when the reference has no episode in the row.
+  Stat l98_reference_ratio;
+  Stat t98_reference_ratio;
+  /// The (world, seed) pairs of the row that both this method and semantic finished, and how
+  /// many of them this method drove a shorter L98 on (a tie does not count); 0 for semantic
+  /// itself and when semantic has no episode in the row.
+  std::size_t semantic_pairs = 0;
+  std::size_t beats_semantic = 0;
   Stat revisits;     ///< over the episodes that recorded it
   Stat revisits_98;  ///< revisits up to T98, over the episodes that reached 98 % and recorded it
-  /// L98 / oracle tour length of the episode's world, over the episodes that reached 98 %
-  /// and have an oracle (for group rows: every plan x seed episode pooled).
+  /// L98 / oracle tour length of the episode's world, over the row's paired episodes that have
+  /// an oracle (for group rows: every plan x seed episode pooled).
   Stat l98_oracle_ratio;
   /// True when the row holds several seeds of some world and, for every such world, all its
   /// seeds gave the same run (same final rate, T98 and L98): a method without random choices
   /// on noise-free sensors. Its sd is then 0 by construction, not by luck.
   bool same_every_seed = false;
+};
+
+/// Which episodes Table I's means of a row are over: a (world, seed) pair is paired when every
+/// method with episodes in the row has a successful episode (EpisodeSummary::succeeded(), with
+/// T98 and L98) of that world and seed. Group rows pair per world and seed.
+struct PairedRow {
+  std::size_t methods = 0;    ///< methods with episodes in the row
+  std::size_t pairs = 0;      ///< (world, seed) pairs every one of them finished
+  std::size_t all_pairs = 0;  ///< (world, seed) pairs with an episode of some method
 };
 
 /// The oracle tour lengths of a row's worlds (one value per world, or with random starts per
@@ -189,7 +214,11 @@ struct Report {
   std::vector<ReportRow> rows;       ///< paper worlds first, then other worlds, then groups
   std::vector<std::string> methods;  ///< paper order, then others by name
   std::map<std::pair<std::string, std::string>, MethodStats> table1;  ///< (row, method)
-  std::map<std::pair<std::string, std::string>, MapStats> table3;     ///< (row, map type)
+  std::map<std::string, PairedRow> paired;                            ///< by row
+  /// The method Table I's ratios are to: rrt when some episode has it, else the first of
+  /// `methods`; empty without episodes.
+  std::string reference;
+  std::map<std::pair<std::string, std::string>, MapStats> table3;  ///< (row, map type)
   std::map<std::string, std::array<bool, 4>> map_types;  ///< method -> maps recorded (Table II)
   std::map<std::string, OracleRowStats> oracle;  ///< by row; rows whose worlds have an oracle
   std::size_t episodes = 0;                      ///< of the main setting
@@ -198,6 +227,9 @@ struct Report {
   std::string main_setting;  ///< EpisodeSummary::setting of the episodes of Tables I-III
   SettingComparison table4;  ///< empty when every episode is of the main setting
 
+  /// True when semantic is one of the methods: Table I then shows how often each method
+  /// beats it.
+  bool hasSemantic() const;
   /// True when some episode has an oracle: Table I then shows L98 / oracle.
   bool hasOracle() const { return !oracle.empty(); }
   /// True when some episode is of another setting than the main one: Table IV exists.
@@ -219,7 +251,9 @@ ResultSet episodesOfSetting(const ResultSet& results, const std::string& setting
 Report buildReport(const ResultSet& results);
 
 /// The report's tables as cells, shared by the markdown files and the HTML page: Table I
-/// (method rows, per world T98, paper T, L98, paper L, L98 / oracle when known, success),
+/// (method rows, per world T98, paper T, L98, paper L (T98 and L98 over the row's paired
+/// episodes, "no shared pair" when there are none), L98 and T98 over the reference's, L98 /
+/// oracle when known, the share of pairs that beat semantic when semantic is there, success),
 /// the revisits, the oracle reference (rows with an oracle; none when there is none),
 /// Table II and Table III, and Table IV (none when every episode is of the main setting).
 plots::HtmlTable table1Cells(const Report& report);
@@ -235,6 +269,9 @@ std::optional<plots::HtmlTable> slamCells(const Report& report);
 
 /// The text that explains each table (also on the HTML page).
 std::string table1Description();
+/// Which episodes Table I's means are over in this report: per row the paired (world, seed)
+/// pairs out of all, the reference method of the ratios, what "beats semantic" counts.
+std::string pairingLine(const Report& report);
 std::string revisitsDescription();
 std::string oracleDescription();
 std::string table2Description();

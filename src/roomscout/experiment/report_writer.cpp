@@ -35,6 +35,9 @@ plots::HtmlPage reportPage(const Report& report, const std::vector<ReportFigure>
 
   plots::HtmlSection t1{"Table I: exploration time and trajectory length", {}};
   t1.blocks.push_back(plots::HtmlParagraph{plain(table1Description())});
+  if (const std::string pairing = pairingLine(report); !pairing.empty()) {
+    t1.blocks.push_back(plots::HtmlParagraph{plain(pairing)});
+  }
   if (const std::string same = sameEverySeedLine(report); !same.empty()) {
     t1.blocks.push_back(plots::HtmlParagraph{plain(same)});
   }
