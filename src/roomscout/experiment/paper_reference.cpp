@@ -84,6 +84,7 @@ constexpr MethodInfo kMethods[] = {
     {"mmpf", "MMPF"},
     {"topo", "TOPO"},
     {"semantic", "Ours (semantic)"},
+    {"semantic_paper", "Ours (paper's method as stated)"},
     {"nearest_frontier", "Nearest frontier (explore_lite)"},
     {"semantic_sampling_only", "Ours, sampling only (ablation)"},
     {"semantic_score_only", "Ours, score only (ablation)"},
