@@ -7,10 +7,14 @@
 
 #include <cmath>
 #include <opencv2/core.hpp>
+#include <string_view>
+#include <type_traits>
 #include <utility>
+#include <variant>
 #include <vector>
 
 #include "roomscout/exploration/strategy_registry.hpp"
+#include "roomscout/io/builtin_worlds.hpp"
 #include "roomscout/maps/semantic_map.hpp"
 #include "roomscout/sim/episode.hpp"
 #include "roomscout/sim/exploration_truth.hpp"
@@ -769,19 +773,122 @@ TEST(SemanticExplorerTest, TakesTheCorridorSeenSinceTheLastSegmentationAsItsRoom
   EXPECT_TRUE(candidates.empty());
 }
 
-TEST(SemanticExplorerTest, AblationsAreRegisteredWithTheirDefaults) {
-  auto sampling = createStrategy("semantic_sampling_only", 1);
-  auto scoring = createStrategy("semantic_score_only", 1);
-  auto value = [](ExplorationStrategy& s, std::string_view name) {
-    for (const ParameterRef& p : s.parameters()) {
-      if (p.name == name) return *std::get<double*>(p.value);
+/// The options of a registered semantic_* strategy, through its parameters() (as the CLI sets
+/// them), compared with `expected` field by field.
+void expectOptions(std::string_view method, const SemanticExplorerOptions& expected) {
+  auto strategy = createStrategy(method, 1);
+  SemanticExplorerOptions copy = expected;
+  const std::vector<ParameterRef> want = copy.parameters();
+  const std::vector<ParameterRef> got = strategy->parameters();
+  ASSERT_EQ(got.size(), want.size()) << method;
+  for (std::size_t i = 0; i < got.size(); ++i) {
+    ASSERT_EQ(got[i].name, want[i].name) << method;
+    std::visit(
+        [&](auto* g) {
+          using T = std::remove_pointer_t<decltype(g)>;
+          EXPECT_EQ(*g, *std::get<T*>(want[i].value)) << method << "." << got[i].name;
+        },
+        got[i].value);
+  }
+}
+
+TEST(SemanticExplorerTest, ThePapersPresetHasEveryAdditionOff) {
+  const SemanticExplorerOptions p = SemanticExplorerOptions::paper();
+  EXPECT_NO_THROW(p.validate());
+  // improved_rrt's tree, Euclidean C.
+  EXPECT_EQ(p.eta_m, 1.0);
+  EXPECT_EQ(p.iterations_per_s, 100.0);
+  EXPECT_FALSE(p.geodesic_cost);
+  // Slivers, label search, hubs, next room, heading, segment, leaf rooms, idle and end phase.
+  EXPECT_EQ(p.min_unknown_m2, 0.0);
+  EXPECT_EQ(p.min_frontier_m, 0.0);
+  EXPECT_EQ(p.pocket_area_m2, 0.0);
+  EXPECT_EQ(p.pocket_area_fraction, 0.0);
+  EXPECT_EQ(p.label_search_m, 0.0);
+  EXPECT_EQ(p.hub_min_neighbours, 0);
+  EXPECT_EQ(p.next_room_cost_factor, 1.0);
+  EXPECT_EQ(p.mass_weight, 0.0);
+  EXPECT_EQ(p.heading_weight, 0.0);
+  EXPECT_EQ(p.segment_weight, 0.0);
+  EXPECT_FALSE(p.leaf_rooms);
+  EXPECT_EQ(p.idle_end_s, 0.0);
+  // The paper's terms at semantic's values.
+  const SemanticExplorerOptions d;
+  EXPECT_EQ(p.k, d.k);
+  EXPECT_EQ(p.gain_weight, d.gain_weight);
+  EXPECT_EQ(p.cost_weight, d.cost_weight);
+  EXPECT_EQ(p.room_reward, d.room_reward);
+  EXPECT_EQ(p.gain_half_side_m, d.gain_half_side_m);
+  // What it keeps to run and end: goal persistence, blacklist, improved_rrt's end test.
+  EXPECT_EQ(p.goal_min_unknown_m2, d.goal_min_unknown_m2);
+  EXPECT_EQ(p.replan_period_s, d.replan_period_s);
+  EXPECT_EQ(p.switch_margin, d.switch_margin);
+  EXPECT_EQ(p.blacklist_radius_m, d.blacklist_radius_m);
+  EXPECT_EQ(p.end_checks, d.end_checks);
+  EXPECT_EQ(p.end_min_frontier_cells, d.end_min_frontier_cells);
+  EXPECT_EQ(p.end_pocket_area_m2, 4.0);
+  EXPECT_EQ(d.end_pocket_area_m2, 0.0);
+}
+
+TEST(SemanticExplorerTest, TheRegisteredPresetsAreThePapersAndItsAblations) {
+  expectOptions("semantic", SemanticExplorerOptions{});
+  expectOptions("semantic_paper", SemanticExplorerOptions::paper());
+  SemanticExplorerOptions sampling = SemanticExplorerOptions::paper();
+  sampling.room_reward = 0.0;
+  expectOptions("semantic_sampling_only", sampling);
+  SemanticExplorerOptions scoring = SemanticExplorerOptions::paper();
+  scoring.k = 0.0;
+  expectOptions("semantic_score_only", scoring);
+}
+
+TEST(SemanticExplorerTest, SamplingOnlyNeverAddsTheRoomReward) {
+  auto strategy = createStrategy("semantic_sampling_only", 1);
+  auto* s = dynamic_cast<SemanticExplorer*>(strategy.get());
+  ASSERT_NE(s, nullptr);
+  // After decisions with the robot in room 1 too (score() depends on the room only through
+  // membership and, for semantic, hubs).
+  TwoRoomGrid w;
+  decideAfterGrowing(*s, w, Pose2{2.0, 1.0, 0.0});
+  ASSERT_EQ(s->currentRoom(), 1);
+  for (const double gain : {0.0, 1.5, 4.0}) {
+    for (const double cost : {0.0, 2.0, 9.0}) {
+      EXPECT_EQ(s->score(gain, cost, true), s->score(gain, cost, false));
     }
-    return -1.0;
+  }
+  auto paper = createStrategy("semantic_paper", 1);
+  auto* p = dynamic_cast<SemanticExplorer*>(paper.get());
+  ASSERT_NE(p, nullptr);
+  EXPECT_GT(p->score(1.5, 2.0, true), p->score(1.5, 2.0, false));
+}
+
+TEST(SemanticExplorerTest, ScoreOnlyMakesNoSemanticDraws) {
+  // The robot sits in room 1, beside its frontier, for 60 s: semantic_paper draws P_sem ever
+  // more often, semantic_score_only never.
+  auto draws = [](std::string_view method) {
+    auto strategy = createStrategy(method, 1);
+    auto* s = dynamic_cast<SemanticExplorer*>(strategy.get());
+    EXPECT_NE(s, nullptr);
+    TwoRoomGrid w;
+    const Pose2 robot{2.0, 1.0, 0.0};
+    for (double t = 0.0; t <= 60.0; t += 1.0) s->decide({w.grid, w.costmap, robot, t, &w.semantic});
+    EXPECT_EQ(s->currentRoom(), 1);
+    EXPECT_FALSE(s->semanticCandidates().empty());
+    EXPECT_GT(s->randomDraws(), 0);
+    return s->semanticDraws();
   };
-  EXPECT_EQ(value(*sampling, "room_reward"), 0.0);
-  EXPECT_GT(value(*sampling, "k"), 0.0);
-  EXPECT_EQ(value(*scoring, "k"), 0.0);
-  EXPECT_GT(value(*scoring, "room_reward"), 0.0);
+  EXPECT_EQ(draws("semantic_score_only"), 0);
+  EXPECT_GT(draws("semantic_paper"), 0);
+}
+
+TEST(SemanticExplorerTest, ThePapersMethodExploresTheSmallHouseAndEndsByItself) {
+  sim::EpisodeConfig config;
+  config.resolve();
+  const sim::WorldModel model(io::loadBuiltinWorld("small_house"), config.world);
+  auto strategy = createStrategy("semantic_paper", 1);
+  const sim::EpisodeResult r = sim::runEpisode(model, config, *strategy, 1);
+  EXPECT_GE(r.exploration_rate, 0.98);
+  EXPECT_TRUE(r.t98_s.has_value());
+  EXPECT_FALSE(r.timed_out) << "ended only by the time limit " << r.max_time_s << " s";
 }
 
 /// A west room with a hidden alcove and a door, near the start, to a large east room: does the

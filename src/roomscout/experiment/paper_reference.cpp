@@ -86,6 +86,7 @@ constexpr MethodInfo kMethods[] = {
     {"topo", "TOPO"},
     {"semantic_paper", "Ours (semantic_paper)"},
     {"semantic", "Ours (semantic)"},
+    {"semantic_paper", "Ours (paper's method as stated)"},
     {"nearest_frontier", "Nearest frontier (explore_lite)"},
     {"semantic_sampling_only", "Ours, sampling only (ablation)"},
     {"semantic_score_only", "Ours, score only (ablation)"},

@@ -24,6 +24,8 @@ void SemanticExplorerOptions::validate() const {
   if (!positive(gain_half_side_m)) throw OptionError("semantic.gain_half_side_m must be > 0");
   if (!finiteAtLeast(min_unknown_m2, 0.0))
     throw OptionError("semantic.min_unknown_m2 must be >= 0");
+  if (!finiteAtLeast(goal_min_unknown_m2, 0.0))
+    throw OptionError("semantic.goal_min_unknown_m2 must be >= 0");
   if (!finiteAtLeast(pocket_area_m2, 0.0))
     throw OptionError("semantic.pocket_area_m2 must be >= 0");
   if (!finiteAtLeast(pocket_area_fraction, 0.0)) {
@@ -44,9 +46,11 @@ void SemanticExplorerOptions::validate() const {
   if (end_checks < 1 || end_min_frontier_cells < 1) {
     throw OptionError("semantic: end_checks and end_min_frontier_cells must be >= 1");
   }
+  if (!finiteAtLeast(end_pocket_area_m2, 0.0))
+    throw OptionError("semantic.end_pocket_area_m2 must be >= 0");
   if (!finiteAtLeast(observed_radius_m, 0.0))
     throw OptionError("semantic.observed_radius_m must be >= 0");
-  if (!positive(idle_end_s)) throw OptionError("semantic.idle_end_s must be > 0");
+  if (!finiteAtLeast(idle_end_s, 0.0)) throw OptionError("semantic.idle_end_s must be >= 0");
   if (max_iterations_per_call < 1)
     throw OptionError("semantic.max_iterations_per_call must be >= 1");
   if (hub_min_neighbours < 0) throw OptionError("semantic.hub_min_neighbours must be >= 0");
@@ -64,66 +68,127 @@ void SemanticExplorerOptions::validate() const {
   if (!finiteAtLeast(mass_cap_m, 0.0)) throw OptionError("semantic.mass_cap_m must be >= 0");
 }
 
+SemanticExplorerOptions SemanticExplorerOptions::paper() {
+  SemanticExplorerOptions o;
+  // The tree of improved_rrt (ImprovedRrtOptions: eta_m 1 m, 100 iterations /s).
+  o.eta_m = 1.0;
+  o.iterations_per_s = 100.0;
+  // C as the paper states it: the Euclidean distance.
+  o.geodesic_cost = false;
+  // Every addition of `semantic` off (see the header).
+  o.min_unknown_m2 = 0.0;
+  o.min_frontier_m = 0.0;
+  o.pocket_area_m2 = 0.0;
+  o.pocket_area_fraction = 0.0;
+  o.label_search_m = 0.0;
+  o.hub_min_neighbours = 0;
+  o.next_room_cost_factor = 1.0;
+  o.mass_weight = 0.0;
+  o.heading_weight = 0.0;
+  o.segment_weight = 0.0;
+  o.leaf_rooms = false;
+  o.idle_end_s = 0.0;
+  // improved_rrt's end test, pocket search included (its min_unknown_area_m2): without the end
+  // phase nothing else leaves out the frontier cells of cupboards and wall cracks that no tree
+  // point leads to, and the robot would wait for the end test until the time limit.
+  o.end_pocket_area_m2 = 4.0;
+  // Kept to run and to end, at `semantic`'s values: goal persistence (goal_min_unknown_m2,
+  // replan_period_s, switch_margin), the blacklist (blacklist_radius_m) and the end test
+  // (end_check_period_s, end_checks, end_min_frontier_cells, observed_radius_m, and the pocket
+  // search above).
+  return o;
+}
+
 std::vector<ParameterRef> SemanticExplorerOptions::parameters() {
   return {
-      {"k", &k, "weight of the time spent in the current room in P(P_sem) = kt/(1+kt) [1/s]"},
-      {"gain_weight", &gain_weight, "w_g: weight of G, the (unknown - occupied) area [1/m^2]"},
-      {"cost_weight", &cost_weight, "w_c: weight of C, the distance to the point [1/m]"},
-      {"room_reward", &room_reward, "A: added to points in the current room, subtracted elsewhere"},
-      {"gain_half_side_m", &gain_half_side_m, "half-side of the square G is measured in [m]"},
+      {"k", &k,
+       "weight of t, the time since the robot's room last changed, in P(P_sem) = kt/(1+kt) "
+       "(paper Eq. 1); 0 = P_rad only, uniform sampling [1/s]"},
+      {"gain_weight", &gain_weight,
+       "w_g: weight of G, the (unknown - occupied) area in the square of half-side "
+       "gain_half_side_m around the point [1/m^2]"},
+      {"cost_weight", &cost_weight,
+       "w_c: weight of C, the distance from the robot to the point (see geodesic_cost) [1/m]"},
+      {"room_reward", &room_reward,
+       "A: added to the score of a point whose anchor lies in the robot's room, subtracted "
+       "elsewhere (a point in no room counts as elsewhere); 0 = plain score"},
+      {"gain_half_side_m", &gain_half_side_m,
+       "half-side of the square around a point in which G, slivers and the goal's persistence "
+       "are measured [m]"},
       {"min_unknown_m2", &min_unknown_m2,
-       "points with less unknown area in G's square are not goals [m^2]"},
+       "slivers: a point with less unknown area in its square is a goal only once idle "
+       "(idle_end_s), and a frontier cell with less is no P_sem; 0 = off [m^2]"},
+      {"goal_min_unknown_m2", &goal_min_unknown_m2,
+       "goal persistence: the goal is kept until its square holds less unknown area than this "
+       "(or it is reached, fails or turns lethal); 0 = until then [m^2]"},
       {"min_frontier_m", &min_frontier_m,
-       "squares with less frontier (free cells next to unknown x cell size) are explored; 0 = off "
-       "[m]"},
+       "slivers: a point with less frontier (free cells next to unknown x cell size) in its "
+       "square is a goal only once idle, and the goal's square counts as explored with less; 0 "
+       "= off [m]"},
       {"pocket_area_m2", &pocket_area_m2,
-       "points opening onto less unknown, non-lethal area count as slivers; 0 = off [m^2]"},
+       "slivers: a point opening onto less enclosed unknown, non-lethal area (4-connected) is a "
+       "goal only once idle, and the end phase skips such cells; 0 = off [m^2]"},
       {"pocket_area_fraction", &pocket_area_fraction,
-       "once idle, pockets must also be smaller than this fraction of the known free area; 0 = "
-       "off"},
+       "once idle, a pocket must also be smaller than this fraction of the known free area (in a "
+       "small flat a wedge of floor seen past a door jamb is no cupboard); 0 = pocket_area_m2 "
+       "alone"},
       {"geodesic_cost", &geodesic_cost,
-       "C is the path length through the costmap instead of the Euclidean distance"},
-      {"eta_m", &eta_m, "tree steering step [m]"},
-      {"iterations_per_s", &iterations_per_s, "tree iterations per simulated second"},
-      {"replan_period_s", &replan_period_s, "re-evaluation period while driving [s]"},
+       "C is the path length past the costmap's lethal cells; false = the Euclidean distance, "
+       "as in the paper"},
+      {"eta_m", &eta_m, "tree step [m]"},
+      {"iterations_per_s", &iterations_per_s, "tree iterations per simulated second [1/s]"},
+      {"replan_period_s", &replan_period_s,
+       "period at which the goal may be replaced while the robot drives to it [s]"},
       {"switch_margin", &switch_margin,
-       "another point must beat the goal's score by this to replace it"},
+       "another point must beat the goal's score by this much to replace it"},
       {"label_search_m", &label_search_m,
-       "unlabelled free cells take the room of the nearest labelled cell this far through free "
-       "cells [m]"},
+       "a free cell the segmentation has not labelled yet takes the room of the nearest labelled "
+       "cell this far through free cells; 0 = off (an unlabelled cell is in no room) [m]"},
       {"blacklist_radius_m", &blacklist_radius_m,
        "reached or failed goals drop frontier points this close [m]"},
       {"end_check_period_s", &end_check_period_s, "period of the end test [s]"},
-      {"end_checks", &end_checks, "consecutive failing end tests that end exploration"},
+      {"end_checks", &end_checks, "consecutive failing end tests that end the exploration"},
       {"end_min_frontier_cells", &end_min_frontier_cells,
-       "fewer reachable frontier cells fail the end test"},
+       "an end test fails when fewer reachable frontier cells are left"},
+      {"end_pocket_area_m2", &end_pocket_area_m2,
+       "the end test leaves out, for good, frontier cells opening onto less enclosed unknown, "
+       "non-lethal area (improved_rrt's min_unknown_area_m2, searched every 10 s); 0 = off "
+       "[m^2]"},
       {"observed_radius_m", &observed_radius_m,
-       "end test: frontier cells still unknown this close to the robot are ignored [m]"},
-      {"idle_end_s", &idle_end_s, "idle this long: the room's slivers, then the end phase [s]"},
+       "the end test and the end phase ignore frontier cells that stayed unknown with the robot "
+       "this close [m]"},
+      {"idle_end_s", &idle_end_s,
+       "with nothing to assign for this long the robot takes its room's slivers, then visits "
+       "the remaining reachable frontier cells (end phase); 0 = off: it waits for the tree and "
+       "the end test [s]"},
       {"max_iterations_per_call", &max_iterations_per_call,
-       "cap on tree iterations run in one call"},
-      {"next_room_cost_factor", &next_room_cost_factor,
-       "C weighs this many times w_c when choosing the next room (in a hub, or no point left in "
-       "the room); 1 = off"},
+       "cap on the owed tree iterations run in one call"},
       {"hub_min_neighbours", &hub_min_neighbours,
-       "a room with this many neighbouring rooms is a hub: no +-A there, P_sem near the robot; 0 = "
-       "off"},
+       "a room with this many neighbouring rooms is a hub (a hallway): no +-A there, P_sem near "
+       "the robot (hub_sample_radius_m), C weighed by next_room_cost_factor; 0 = off"},
+      {"next_room_cost_factor", &next_room_cost_factor,
+       "choosing the next room (in a hub, or no point left in the room but slivers): C weighs "
+       "this many times w_c; 1 = off"},
       {"hub_sample_radius_m", &hub_sample_radius_m,
-       "in a hub, P_sem is drawn from the frontier cells in the square of this half-side around "
-       "the robot; 0 = none [m]"},
+       "in a hub, P_sem is drawn from the frontier cells (of any room) in the square of this "
+       "half-side around the robot; 0 = no P_sem in a hub [m]"},
       {"heading_weight", &heading_weight,
        "S -= heading_weight (1 - cos d) / 2, d the angle between the robot's heading and the "
-       "line to the point (not for the current goal); 0 = off"},
+       "line to the point: turning back costs this much (the current goal never pays it); 0 = "
+       "off"},
       {"segment_weight", &segment_weight,
-       "S += segment_weight min(L, segment_cap_m), L the frontier segment's length [1/m]; 0 = off"},
-      {"segment_cap_m", &segment_cap_m, "cap on the frontier segment's length [m]"},
+       "S += segment_weight min(L, segment_cap_m), L the length of the frontier segment the "
+       "point opens onto; 0 = off [1/m]"},
+      {"segment_cap_m", &segment_cap_m, "cap on L, the frontier segment's length [m]"},
       {"mass_weight", &mass_weight,
        "choosing the next room: S += mass_weight min(M, mass_cap_m), M the frontier (free cells "
-       "next to unknown x cell size) in a square around the point [1/m]; 0 = off"},
+       "next to unknown x cell size) in the square of half-side mass_half_side_m around the "
+       "point; 0 = off [1/m]"},
       {"mass_half_side_m", &mass_half_side_m, "half-side of the square M is counted in [m]"},
       {"mass_cap_m", &mass_cap_m, "cap on M [m]"},
       {"leaf_rooms", &leaf_rooms,
-       "a room whose only neighbour is the current room counts as part of it (+A, P_sem)"},
+       "a room whose only neighbour is the current room, while the current room has another, "
+       "counts as part of it (+A for its points, P_sem from its frontier); false = off"},
   };
 }
 
@@ -135,8 +200,11 @@ double semanticSampleProbability(double k, double t_s) {
 namespace {
 
 /// Unknown space that reaches the known map's border through an opening this wide is no
-/// pocket, whatever its area: it may go on beyond the map (the baselines' min_opening_m).
+/// pocket, whatever its area: it may go on beyond the map (improved_rrt's min_opening_m).
 constexpr double kPocketOpening_m = 0.4;
+/// The period of the end test's pocket search (end_pocket_area_m2), a scan of the whole map:
+/// improved_rrt's pocket_check_period_s.
+constexpr double kEndPocketCheckPeriod_s = 10.0;
 /// Geodesic C is searched on blocks of this many cells a side (0.1 m at 0.05 m cells).
 constexpr int kBlock = 2;
 
@@ -193,11 +261,13 @@ int frontierCellsWanted(const SemanticExplorerOptions& o, double resolution_m) {
   return static_cast<int>(std::lround(o.min_frontier_m / resolution_m));
 }
 
-/// Whether a square holds too little to see to be worth a trip: less than min_unknown_m2 of
-/// unknown space, or less than min_frontier_m of frontier (its unknown space lies behind walls
-/// already seen, e.g. outside a room corner, and cannot be seen from there).
-bool exhausted(const SquareAreas& a, const SemanticExplorerOptions& o, double resolution_m) {
-  return a.unknown_m2 < o.min_unknown_m2 || a.frontier_cells < frontierCellsWanted(o, resolution_m);
+/// Whether a square holds too little to see to be worth a trip: less than `min_unknown_m2` of
+/// unknown space (the sliver threshold or the goal's), or less than min_frontier_m of frontier
+/// (its unknown space lies behind walls already seen, e.g. outside a room corner, and cannot be
+/// seen from there).
+bool exhausted(const SquareAreas& a, const SemanticExplorerOptions& o, double min_unknown_m2,
+               double resolution_m) {
+  return a.unknown_m2 < min_unknown_m2 || a.frontier_cells < frontierCellsWanted(o, resolution_m);
 }
 
 }  // namespace
@@ -306,7 +376,7 @@ bool SemanticExplorer::goalExplored(const ExplorationInput& input) const {
   if (!g.contains(g.cellOf(goal_m_))) return true;
   const SquareAreas a = squareAreas(input.grid, goal_m_, options_.gain_half_side_m,
                                     frontierCellsWanted(options_, g.resolution_m()));
-  return exhausted(a, options_, g.resolution_m());
+  return exhausted(a, options_, options_.goal_min_unknown_m2, g.resolution_m());
 }
 
 double SemanticExplorer::segmentLength(const OccupancyGrid& grid, const Vec2& p) const {
@@ -522,7 +592,7 @@ void SemanticExplorer::cost(const ExplorationInput& input, std::vector<Candidate
   // search over the whole map (same episodes, 20-30x less time per decision in the houses).
   // Open candidates keep an infinite cost (they cannot win). Blocks of 2 x 2 cells instead of
   // single cells: the large office's episodes took 43 % less wall time, the lengths and
-  // revisits moved within the seeds' noise (docs/semantic_tuning.md, session 11).
+  // revisits moved within the seeds' noise (docs/semantic_tuning.md).
   const GridGeometry& g = input.grid.geometry();
   const int gw = g.width(), gh = g.height();
   const int w = (gw + kBlock - 1) / kBlock, h = (gh + kBlock - 1) / kBlock;
@@ -655,9 +725,24 @@ double SemanticExplorer::pocketArea_m2(const OccupancyGrid& grid) const {
 bool SemanticExplorer::endTest(const ExplorationInput& input) {
   if (input.time_s - last_end_check_s_ < options_.end_check_period_s - 1e-9) return false;
   last_end_check_s_ = input.time_s;
-  const std::size_t cells =
-      countReachableFrontierCells(input.grid, input.costmap, 4, &visited_, input.robot.position(),
-                                  static_cast<std::size_t>(options_.end_min_frontier_cells));
+  const Vec2 robot = input.robot.position();
+  const auto count = [&] {
+    return countReachableFrontierCells(input.grid, input.costmap, 4, &visited_, robot,
+                                       static_cast<std::size_t>(options_.end_min_frontier_cells));
+  };
+  std::size_t cells = count();
+  // improved_rrt's pocket search: frontier cells opening onto a pocket of unknown space are
+  // left out of the test for good, as those the robot came near are.
+  if (options_.end_pocket_area_m2 > 0.0 &&
+      cells >= static_cast<std::size_t>(options_.end_min_frontier_cells) &&
+      input.time_s - last_end_pocket_check_s_ >= kEndPocketCheckPeriod_s - 1e-9) {
+    last_end_pocket_check_s_ = input.time_s;
+    const std::vector<Cell> all =
+        reachableFrontierCells(input.grid, input.costmap, 4, &visited_, &robot);
+    markUnknownPockets(visited_, input.grid, input.costmap, all, options_.end_pocket_area_m2,
+                       kPocketOpening_m);
+    cells = count();
+  }
   if (cells < static_cast<std::size_t>(options_.end_min_frontier_cells)) {
     return ++failed_end_checks_ >= options_.end_checks;
   }
@@ -692,7 +777,8 @@ Decision SemanticExplorer::decide(const ExplorationInput& input) {
   }
   markDisc(visited_, g, robot, options_.observed_radius_m);
   updateRoom(input);
-  idle_ = idle_since_s_ >= 0.0 && input.time_s - idle_since_s_ >= options_.idle_end_s - 1e-9;
+  idle_ = options_.idle_end_s > 0.0 && idle_since_s_ >= 0.0 &&
+          input.time_s - idle_since_s_ >= options_.idle_end_s - 1e-9;
   if (end_phase_) {
     // The robot idled for idle_end_s with no point and no sliver of its room left: from here
     // it visits the reachable frontier cells (as the end test counts them) it has not come
@@ -715,8 +801,8 @@ Decision SemanticExplorer::decide(const ExplorationInput& input) {
   }
   if (n > 0) grow(input, n);
 
-  // The goal is kept until its square is explored (less than min_unknown_m2 of unknown space
-  // or min_frontier_m of frontier left), not merely until its own cell is seen: the laser's
+  // The goal is kept until its square is explored (less than goal_min_unknown_m2 of unknown
+  // space or min_frontier_m of frontier left), not merely until its own cell is seen: the laser's
   // edge recedes as the robot drives, so the first unknown cell of an edge is seen long before
   // the space behind it. A goal dropped because its cell turned lethal (a wall seen beside
   // it from close by) is blacklisted: walls seen only from close by can fade back to unknown
@@ -780,7 +866,7 @@ Decision SemanticExplorer::decide(const ExplorationInput& input) {
       const std::size_t cell = g.index(g.cellOf(points_[i].p));
       const SquareAreas a =
           squareAreas(input.grid, points_[i].p, options_.gain_half_side_m, frontier_wanted);
-      const bool sliver = exhausted(a, options_, g.resolution_m()) ||
+      const bool sliver = exhausted(a, options_, options_.min_unknown_m2, g.resolution_m()) ||
                           (options_.pocket_area_m2 > 0.0 && pockets_[cell]);
       if (sliver && (!slivers_wanted || visited_[cell])) continue;
       const bool inside = inCurrentRoom(roomOf(input, points_[i].anchor));

@@ -4,74 +4,76 @@
 // longer the robot stays in it, and a goal score that rewards frontier points in that room,
 // so the robot finishes the room it is in before it moves on.
 //
-// Frontier point generation (§III-C.1). One tree rooted at the start, as improved_rrt's (step
-// eta_m, iterations_per_s per simulated second). Each iteration draws its sampling point P_sap:
-// - with probability 1 / (1 + k t): P_rad, uniform over the bounding box of the known cells;
-// - with probability k t / (1 + k t): P_sem, uniform among the current room's frontier cells
-//   (known-free, non-lethal, an unknown 4-neighbour; see Hubs and Leaf rooms below),
-// t being the time since the robot's room last changed; without such cells, P_rad. An extension
-// toward P_sem takes the full step, so the edge crosses the frontier. An edge that reaches
-// unknown space adds its first unknown point P_i (with its anchor, the known cell before it) to
-// the frontier point set F.
-//
-// Evaluation (§III-C.2). For each P_i in F: G = (unknown - occupied) area in the square of
-// half-side gain_half_side_m around P_i; C = the path length from the robot past the costmap's
-// lethal cells (Dijkstra over 0.1 m blocks, stopped once the choice is settled), or with
-// geodesic_cost off the Euclidean distance; S = w_g G - w_c C + A when P_i's anchor lies in the
-// current room, - A otherwise (in no room yet counts as outside). Free cells the segmentation
-// has not labelled yet take the room of the nearest labelled cell within label_search_m through
-// free cells. The best S becomes the goal. It is kept until its square is explored (less than
-// min_unknown_m2 of unknown space or min_frontier_m of frontier left) or it turns lethal (then
-// it is blacklisted), and replaced earlier, every replan_period_s, only by a point that beats it
-// by switch_margin: choosing afresh whenever the laser's edge receded made the robot swing
-// between points (L98 10-20 % longer).
-//
-// What the paper leaves open. Each rule below was measured in the built-in worlds and on the
-// floor plans; L98 is given with the rule against without it (or against the value before),
-// small / medium house / office, seeds 1-10 unless said (docs/semantic_tuning.md has every
-// sweep, by session, and the variants not kept):
-// - Geodesic C (session 11): Euclidean C was 15 % longer in the small house, 10 % in the office,
-//   1 % shorter in the medium house.
-// - Slivers (10, 15, 22): points with too little unknown space (min_unknown_m2) or frontier
-//   (min_frontier_m) in their square, or opening onto a pocket (< pocket_area_m2 of enclosed
-//   unknown space: a cupboard, a wall face the laser grazed), are goals only once the robot has
-//   idled (below). Without the frontier test L98 was 11 / 3 / 8 % longer; min_frontier_m 1 m
-//   against 0.5: 104.5 / 213.2 / 530.9 m against 106.0 / 231.6 / 564.0 (seeds 1-20); leaving
-//   pockets out took 14 / 21 / 28 % off the revisits.
-// - Label search (21): label_search_m 3.5 m (the laser's range) against 0.5: 111.0 / 238.1 /
-//   561.3 m against 111.9 / 243.0 / 572.0 (seeds 1-20), HouseExpo 48.84 against 50.59 m.
-// - Hubs (16, 19): in a room with hub_min_neighbours or more neighbours (a hallway) no point gets
-//   +-A, so the rooms beside it come before its far end: 121.6 / 257.5 / 623.4 m against 120.6 /
-//   289.9 / 632.9. There P_sem comes from the frontier in the square of half-side
-//   hub_sample_radius_m around the robot (4 m then): 117.6 / 245.8 / 576.1 against 117.3 /
-//   248.3 / 605.9.
-// - Next room (17, 25): in a hub, or when the room has no point left but slivers, C weighs
-//   next_room_cost_factor times more (3: 117.3 / 248.3 / 605.9 m against 121.6 / 257.5 / 623.4)
-//   and S gains mass_weight per metre of frontier in the square of half-side mass_half_side_m
-//   around the point, up to mass_cap_m, as mmpf's potential favours the frontier with most
-//   around it (1 /m in 6 x 6 m up to 10 m: 98.8 / 212.9 m against 102.8 / 218.9, seeds 1-40).
-// - Heading (20): S -= heading_weight (1 - cos d) / 2, d the angle between the robot's heading
-//   and the line to the point, so the robot does not zig-zag; the current goal never pays it
-//   (where its path bends round a wall the robot faces away from it). Weight 8 (of 0 / 4 / 8 /
-//   12 / 16) against 0: -9.7 / -2.1 / -0.5 % (seeds 1-20).
-// - Frontier segment (22): S += segment_weight per metre of the frontier segment beside P_i, up
-//   to segment_cap_m, so a wide opening beats a crack with as much unknown space behind it
-//   (4 /m up to 2 m: -4.5 / -2.7 / +0.5 %, seeds 1-20).
-// - Leaf rooms (26): a room whose only neighbour is the current room, while the current room has
-//   another, counts as part of it (+A, P_sem): 93.1 / 211.4 / 511.3 m against 98.8 / 212.9 /
-//   532.2 (seeds 1-40 / 1-40 / 1-30), HouseExpo 45.62 against 48.36 m.
-// - Idle and end (18, 27): after idle_end_s with nothing to assign the robot takes its room's
-//   slivers, then visits the remaining reachable frontier cells nearest by C first, and ends when
-//   none is left or, as improved_rrt, when fewer than end_min_frontier_cells reachable frontier
-//   cells are left in end_checks consecutive checks. The tree misses wedges of rooms seen from
-//   their doors: with this phase all 150 HouseExpo episodes (seeds 1-3) reach 98 %, 149 without.
-// The tree's rate, 300 iterations /s (24): 102.8 / 218.9 / 533.3 m against 105.8 / 222.7 / 541.3
-// at 100 (seeds 1-40 / 1-40 / 1-30); eta_m 0.5 or 2 m were longer. A: 2 and 4 were level with 3
-// or longer, and so were k 0.05, 0.2 and 0.4 with 0.1 (seeds 1-40 in the houses, session 28);
-// A 1 is 4.5 % shorter on the HouseExpo plans but 1.6 / 3.0 / 4.4 % longer in the built-in
-// worlds (18).
+// The paper's method
+// - Frontier point generation (§III-C.1). One tree rooted at the start, as improved_rrt's (step
+//   eta_m, iterations_per_s per simulated second). Each iteration draws its sampling point
+//   P_sap: with probability 1 / (1 + k t) P_rad, uniform over the bounding box of the known
+//   cells; with probability k t / (1 + k t) P_sem, uniform among the current room's frontier
+//   cells (known-free, non-lethal, an unknown 4-neighbour), t being the time since the robot's
+//   room last changed; without such cells, P_rad. An extension toward P_sem takes the full step,
+//   so that the edge crosses the frontier. An edge that reaches unknown space adds its first
+//   unknown point P_i (with its anchor, the known cell before it) to the frontier point set F.
+// - Evaluation (§III-C.2). For each P_i in F: G = (unknown - occupied) area in the square of
+//   half-side gain_half_side_m around P_i, C = the distance from the robot to P_i, and
+//   S = w_g G - w_c C + A when P_i's anchor lies in the robot's room, - A otherwise (a point in
+//   no room counts as outside). The best S becomes the goal.
 // Without a semantic map (ExplorationInput::semantic null) no point is in a room: sampling is
 // uniform and every point scores -A, i.e. the plain RRT score.
+//
+// What `semantic` adds to the paper (SemanticExplorerOptions' defaults; the measured effect of
+// each is in docs/semantic_method.md). Each has a value that switches it off, which
+// SemanticExplorerOptions::paper() uses:
+// - Geodesic C: C is the path length past the costmap's lethal cells, not the straight line,
+//   so that a point behind a wall is not taken for a near one. Off: geodesic_cost false.
+// - Slivers: points whose square holds too little unknown space (min_unknown_m2) or frontier
+//   (min_frontier_m), or that open onto a small enclosed pocket of unknown space
+//   (pocket_area_m2, relative to the map once idle: pocket_area_fraction), are goals only once
+//   the robot has idled, and are no P_sem; their unknown space lies behind walls already seen
+//   or in a cupboard, and the trip shows little. Off: min_unknown_m2 0, min_frontier_m 0,
+//   pocket_area_m2 0.
+// - Label search: a free cell the segmentation has not labelled yet takes the room of the
+//   nearest labelled cell within label_search_m through free cells, since the robot saw it
+//   from that room; a point's anchor is usually such a fresh cell. Off: label_search_m 0 (an
+//   unlabelled cell is in no room).
+// - Hubs: in a room with hub_min_neighbours or more neighbours (a hallway) no point gets +-A
+//   and P_sem comes from the frontier within hub_sample_radius_m of the robot, so that the
+//   rooms beside a hallway come before its far end. Off: hub_min_neighbours 0.
+// - Next room: in a hub, or when the room has no point left but slivers, C weighs
+//   next_room_cost_factor times more and S gains mass_weight per metre of frontier around the
+//   point (mass_half_side_m, up to mass_cap_m), so that the next room is a near one with much
+//   left to see, as mmpf's potential favours. Off: next_room_cost_factor 1, mass_weight 0.
+// - Heading: S -= heading_weight (1 - cos d) / 2, d the angle between the robot's heading and
+//   the line to the point (the current goal never pays it), so that the robot does not
+//   zig-zag. Off: heading_weight 0.
+// - Frontier segment: S += segment_weight per metre of the frontier segment beside P_i, up to
+//   segment_cap_m, so that a wide opening beats a crack with as much unknown space behind it.
+//   Off: segment_weight 0.
+// - Leaf rooms: a room whose only neighbour is the current room, while the current room has
+//   another, counts as part of it (+A, P_sem), so that a closet or bathroom is finished with
+//   the room it opens onto instead of on a later return. Off: leaf_rooms false.
+// - Idle and end phase: after idle_end_s with nothing to assign the robot takes its room's
+//   slivers, then visits the remaining reachable frontier cells nearest by C first, and ends
+//   when none is left; the tree misses wedges of rooms seen from their doors, which would
+//   otherwise stay unseen. Off: idle_end_s 0 (the robot waits for the tree and the end test).
+// - The tree's rate, iterations_per_s 300 against improved_rrt's 100, so that points are found
+//   sooner. paper() uses improved_rrt's 100.
+//
+// What semantic_paper keeps to run and end (SemanticExplorerOptions::paper(); the paper does
+// not state them, but any method needs them):
+// - Goal persistence: the goal is kept until its square is explored (less than
+//   goal_min_unknown_m2 of unknown space left, or less than min_frontier_m of frontier when
+//   that is on) or it turns lethal (then it is blacklisted), and replaced earlier, every
+//   replan_period_s, only by a point that beats it by switch_margin; choosing afresh whenever
+//   the laser's edge receded made the robot swing between points.
+// - The blacklist: reached or failed goals drop the points within blacklist_radius_m.
+// - The end test, as improved_rrt's: fewer than end_min_frontier_cells reachable frontier cells
+//   in end_checks consecutive tests, one every end_check_period_s, leaving out the cells the
+//   robot came within observed_radius_m of and, with end_pocket_area_m2 (paper() 4 m^2, as
+//   improved_rrt; `semantic` 0, its end phase skips pockets instead), those opening onto a
+//   pocket of unknown space: without the end phase no goal leads to them, and the robot would
+//   otherwise wait until the time limit.
+// - While nothing is assigned, the robot waits where it stands as the tree grows.
+//
 // A grid whose geometry differs from the last call's (a SLAM map that grew, its origin moving):
 // the tree is re-indexed for the new grid, keeping its nodes on it (a tree left with none
 // restarts at the robot); frontier points off the grid are dropped and the others keep their
@@ -95,66 +97,52 @@
 
 namespace roomscout {
 
+/// The options of `semantic` (its defaults) and of the paper's method (paper()). Each field is
+/// documented once, in parameters(): the text `roomscout` prints.
 struct SemanticExplorerOptions {
-  double k = 0.1;                       ///< weight of the time in the room in P(P_sem) [1/s]
-  double gain_weight = 3.0;             ///< w_g [1/m^2]
-  double cost_weight = 1.0;             ///< w_c [1/m]
-  double room_reward = 3.0;             ///< A: added inside the current room, subtracted outside
-  double gain_half_side_m = 1.0;        ///< half-side of G's square [m]
-  double min_unknown_m2 = 1.0;          ///< points with less unknown area in the square are
-                                        ///< goals only when nothing else was found for
-                                        ///< idle_end_s (slivers along walls, furniture faces,
-                                        ///< far room corners)
-  double min_frontier_m = 1.0;          ///< ... or less frontier (free cells next to unknown, x
-                                        ///< the cell size) in the square: its unknown space lies
-                                        ///< behind walls seen already; 0 = off [m]
-  double pocket_area_m2 = 2.0;          ///< points opening onto less unknown, non-lethal area
-                                        ///< (4-connected) count as slivers; 0 = off [m^2]
-  double pocket_area_fraction = 0.01;   ///< once idle, a pocket must also be smaller than this
-                                        ///< fraction of the known free area (in a small flat a
-                                        ///< wedge of floor seen past a door jamb is no
-                                        ///< cupboard); 0 = pocket_area_m2 alone
-  bool geodesic_cost = true;            ///< C = path length through the costmap, not Euclidean
-  double eta_m = 1.0;                   ///< tree step [m]
-  double iterations_per_s = 300.0;      ///< tree iterations per simulated second
-  double replan_period_s = 2.0;         ///< re-evaluation period while driving [s]
-  double switch_margin = 6.0;           ///< another point must beat the goal's score by this
-  double label_search_m = 3.5;          ///< unlabelled free cells take the room of the nearest
-                                        ///< labelled cell this far through free cells (the
-                                        ///< laser's range: the robot saw them from its room) [m]
-  double blacklist_radius_m = 0.3;      ///< reached or failed goals drop points this close [m]
-  double end_check_period_s = 1.0;      ///< period of the end test [s]
-  int end_checks = 5;                   ///< consecutive failing end tests that end exploration
-  int end_min_frontier_cells = 2;       ///< fewer reachable frontier cells fail the end test
-  double observed_radius_m = 0.75;      ///< end test ignores frontier cells that stayed unknown
-                                        ///< with the robot this close [m]
-  double idle_end_s = 30.0;             ///< idling this long: the current room's slivers, then
-                                        ///< the end phase [s]
-  int max_iterations_per_call = 20000;  ///< cap on owed iterations run in one call
-  int hub_min_neighbours = 4;           ///< a room with this many neighbouring rooms is a hub:
-                                        ///< there no +-A and P_sem near the robot; 0 = off
-  double next_room_cost_factor = 3.0;   ///< choosing the next room (in a hub, or no point
-                                        ///< left in the current room but slivers): C weighs
-                                        ///< this many times w_c; 1 = off
-  double hub_sample_radius_m = 4.5;     ///< in a hub, P_sem is drawn from the frontier cells
-                                        ///< (of any room) in the square of this half-side
-                                        ///< around the robot; 0 = no P_sem in a hub [m]
-  double heading_weight = 8.0;          ///< S -= heading_weight (1 - cos d) / 2, d the angle
-                                        ///< between the robot's heading and the line to the
-                                        ///< point: turning back costs this much (the current
-                                        ///< goal never pays it); 0 = off
-  double segment_weight = 4.0;          ///< S += segment_weight min(L, segment_cap_m), L the
-                                        ///< length of the frontier segment the point opens
-                                        ///< onto [1/m]; 0 = off
-  double segment_cap_m = 2.0;           ///< cap on L [m]
-  double mass_weight = 1.0;             ///< choosing the next room: S += mass_weight min(M,
-                                        ///< mass_cap_m), M the frontier around the point [1/m];
-                                        ///< 0 = off
-  double mass_half_side_m = 3.0;        ///< half-side of the square M is counted in [m]
-  double mass_cap_m = 10.0;             ///< cap on M [m]
-  bool leaf_rooms = true;               ///< a room whose only neighbour is the current room
-                                        ///< counts as part of it: +A for its points, P_sem
-                                        ///< from its frontier too
+  double k = 0.1;
+  double gain_weight = 3.0;
+  double cost_weight = 1.0;
+  double room_reward = 3.0;
+  double gain_half_side_m = 1.0;
+  double min_unknown_m2 = 1.0;
+  double goal_min_unknown_m2 = 1.0;
+  double min_frontier_m = 1.0;
+  double pocket_area_m2 = 2.0;
+  double pocket_area_fraction = 0.01;
+  bool geodesic_cost = true;
+  double eta_m = 1.0;
+  double iterations_per_s = 300.0;
+  double replan_period_s = 2.0;
+  double switch_margin = 6.0;
+  double label_search_m = 3.5;
+  double blacklist_radius_m = 0.3;
+  double end_check_period_s = 1.0;
+  int end_checks = 5;
+  int end_min_frontier_cells = 2;
+  double end_pocket_area_m2 = 0.0;
+  double observed_radius_m = 0.75;
+  double idle_end_s = 30.0;
+  int max_iterations_per_call = 20000;
+  int hub_min_neighbours = 4;
+  double next_room_cost_factor = 3.0;
+  double hub_sample_radius_m = 4.5;
+  double heading_weight = 8.0;
+  double segment_weight = 4.0;
+  double segment_cap_m = 2.0;
+  double mass_weight = 1.0;
+  double mass_half_side_m = 3.0;
+  double mass_cap_m = 10.0;
+  bool leaf_rooms = true;
+
+  /// The paper's method as the paper states it (§III-C), for `semantic_paper` and its
+  /// ablations: every addition of `semantic` off (see the header), C Euclidean, and the tree of
+  /// improved_rrt (SMMR-Explore's rrt node, which the paper builds on: eta_m 1 m, 100 iterations
+  /// per second). w_g, w_c, A and k are `semantic`'s: the paper gives no values for A and k.
+  /// What it keeps is only what a method needs to run and to end: goal persistence (with the
+  /// one threshold goal_min_unknown_m2 for "its square is explored", and switch_margin on the
+  /// replan period), the blacklist and the end test.
+  static SemanticExplorerOptions paper();
 
   void validate() const;
   std::vector<ParameterRef> parameters();
@@ -232,8 +220,9 @@ class SemanticExplorer final : public ExplorationStrategy {
   /// 4-neighbour) beside the frontier point p, up to segment_cap_m.
   double segmentLength(const OccupancyGrid& grid, const Vec2& p) const;
   bool stale(const ExplorationInput& input, const Vec2& p) const;
-  /// The goal's square is explored (too little unknown space or frontier left), or the goal is
-  /// blacklisted or off the grid. Lethal goals are dropped before this is asked (decide()).
+  /// The goal's square is explored (less than goal_min_unknown_m2 of unknown space or
+  /// min_frontier_m of frontier left), or the goal is blacklisted or off the grid. Lethal goals are
+  /// dropped before this is asked (decide()).
   bool goalExplored(const ExplorationInput& input) const;
   bool blacklisted(const Vec2& p) const;
   /// A point that may become the goal (or the goal itself), while the points are scored.
@@ -251,7 +240,7 @@ class SemanticExplorer final : public ExplorationStrategy {
   /// the choice applies to C (the geodesic search stops once no open candidate can win).
   void cost(const ExplorationInput& input, std::vector<Candidate>& candidates, double w_c);
   /// Adds mass_weight min(M, mass_cap_m) to every candidate's without_cost, M the frontier in
-  /// the square of half-side mass_half_side_m around it (see Frontier mass in the header).
+  /// the square of half-side mass_half_side_m around it (see Next room in the header).
   void addFrontierMass(const OccupancyGrid& grid, std::vector<Candidate>& candidates);
   bool endTest(const ExplorationInput& input);
   /// The end phase's goal: the reachable frontier cell (as the end test counts them) nearest by
@@ -269,6 +258,7 @@ class SemanticExplorer final : public ExplorationStrategy {
   GeometryWatch geometry_;  ///< the grid geometry of the last call
   double grown_until_s_ = 0.0;
   double last_end_check_s_ = -1e9;
+  double last_end_pocket_check_s_ = -1e9;
   int failed_end_checks_ = 0;
   double idle_since_s_ = -1.0;
   bool chasing_slivers_ = false;      ///< the goal is a sliver chosen after idle_end_s of idling

@@ -33,18 +33,30 @@ const std::vector<StrategyEntry>& strategyRegistry() {
        "window, farthest from the centre of the map first, backtracking to the nearest vertex",
        [](std::uint64_t /*seed*/) { return std::make_unique<TopoExploration>(); }},
       {"semantic",
-       "the paper's semantic-region-aware RRT exploration: samples drawn from the current room's "
-       "frontier with probability kt/(1+kt), score = w_g*G - w_c*C +/- A (current room or not)",
+       "the paper's semantic-region-aware RRT exploration (samples drawn from the current room's "
+       "frontier with probability kt/(1+kt), score = w_g*G - w_c*C +/- A) plus our additions: "
+       "geodesic C, slivers, label search, hubs, next-room cost and frontier mass, heading and "
+       "segment terms, leaf rooms, end phase (docs/semantic_method.md)",
        [](std::uint64_t seed) { return std::make_unique<SemanticExplorer>(seed); }},
-      {"semantic_sampling_only", "ablation of semantic: room-biased sampling, plain score (A = 0)",
+      {"semantic_paper",
+       "the paper's method as the paper states it: samples drawn from the current room's frontier "
+       "with probability kt/(1+kt), else uniform over the known box; score = w_g*G - w_c*C +/- A "
+       "with Euclidean C; improved_rrt's tree; none of semantic's additions",
        [](std::uint64_t seed) {
-         SemanticExplorerOptions o;
+         return std::make_unique<SemanticExplorer>(seed, SemanticExplorerOptions::paper(),
+                                                   "semantic_paper");
+       }},
+      {"semantic_sampling_only",
+       "ablation of semantic_paper: room-biased sampling, plain score (A = 0)",
+       [](std::uint64_t seed) {
+         SemanticExplorerOptions o = SemanticExplorerOptions::paper();
          o.room_reward = 0.0;
          return std::make_unique<SemanticExplorer>(seed, o, "semantic_sampling_only");
        }},
-      {"semantic_score_only", "ablation of semantic: uniform sampling (k = 0), room-aware score",
+      {"semantic_score_only",
+       "ablation of semantic_paper: uniform sampling (k = 0), room-aware score",
        [](std::uint64_t seed) {
-         SemanticExplorerOptions o;
+         SemanticExplorerOptions o = SemanticExplorerOptions::paper();
          o.k = 0.0;
          return std::make_unique<SemanticExplorer>(seed, o, "semantic_score_only");
        }},
