@@ -67,8 +67,8 @@ TEST_P(EveryMethodExploresTheHouses, ReachesAtLeast98PercentAndEnds) {
   // whole episode's, and what the robot does once the map is complete adds to the latter only.
   ASSERT_TRUE(r.revisits98.has_value());
   EXPECT_LE(*r.revisits98, r.revisits);
-  // rrt ends by itself in 6 of 10 seeds of the medium house, not seed 1 (issue 3, open: the
-  // end test still counts frontier cells neither of its detectors sends the robot to).
+  // rrt ends by itself in 6 of 10 seeds of the medium house, not seed 1: its end test counts
+  // frontier cells neither of its detectors sends the robot to (docs/methods.md).
   if (world_name == "medium_house" && method == "rrt") return;
   EXPECT_FALSE(r.timed_out) << "ended only by the time limit " << r.max_time_s << " s";
 }

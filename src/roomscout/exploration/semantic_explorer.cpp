@@ -591,8 +591,8 @@ void SemanticExplorer::cost(const ExplorationInput& input, std::vector<Candidate
   // candidate still open can beat the best final one of its kind: the choice is that of a
   // search over the whole map (same episodes, 20-30x less time per decision in the houses).
   // Open candidates keep an infinite cost (they cannot win). Blocks of 2 x 2 cells instead of
-  // single cells: the large office's episodes took 43 % less wall time, the lengths and
-  // revisits moved within the seeds' noise (docs/semantic_tuning.md).
+  // single cells take about half the time on large maps, with lengths and revisits within the
+  // seeds' noise.
   const GridGeometry& g = input.grid.geometry();
   const int gw = g.width(), gh = g.height();
   const int w = (gw + kBlock - 1) / kBlock, h = (gh + kBlock - 1) / kBlock;
