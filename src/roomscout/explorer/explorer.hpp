@@ -32,7 +32,8 @@
 namespace roomscout {
 
 /// When a goal counts as reached or failed.
-/// Its fields are documented in parameters() and printed by `roomscout options`.
+/// Its fields are documented in parameters(), followerParameters() and laserParameters(),
+/// and printed by `roomscout options`.
 struct GoalWatchdogOptions {
   double goal_tolerance_m = 0.15;
   double lookahead_m = 0.35;
