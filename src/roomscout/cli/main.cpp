@@ -11,6 +11,7 @@
 
 #include "roomscout/cli/bench_commands.hpp"
 #include "roomscout/cli/map_commands.hpp"
+#include "roomscout/cli/options_command.hpp"
 #include "roomscout/core/errors.hpp"
 #include "roomscout/experiment/episode_setup.hpp"
 #include "roomscout/experiment/recorded_episode.hpp"
@@ -165,7 +166,7 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   explore_cmd->add_option("--out", explore.out, "output directory")->required();
   explore_cmd->add_option("--config", explore.config,
-                          "YAML file of options, grouped as in metrics.json");
+                          "YAML file of options (see `roomscout options`)");
   explore_cmd->add_option("--max-time", explore.max_time_s, "simulated time limit [s]");
   explore_cmd->add_option("--start", explore.start,
                           "start pose X,Y,YAW [m, m, rad] for map_server worlds");
@@ -189,6 +190,7 @@ int main(int argc, char** argv) {
   const cli::Subcommand segment_eval_cmd = cli::addSegmentEvalCommand(app);
   const cli::Subcommand bench_cmd = cli::addBenchCommand(app);
   const cli::Subcommand report_cmd = cli::addReportCommand(app);
+  const cli::Subcommand options_cmd = cli::addOptionsCommand(app);
 
   try {
     app.parse(argc, argv);
@@ -202,6 +204,7 @@ int main(int argc, char** argv) {
     if (segment_eval_cmd.app->parsed()) return segment_eval_cmd.run();
     if (bench_cmd.app->parsed()) return bench_cmd.run();
     if (report_cmd.app->parsed()) return report_cmd.run();
+    if (options_cmd.app->parsed()) return options_cmd.run();
     if (methods_cmd->parsed()) {
       for (const StrategyEntry& e : strategyRegistry())
         std::printf("%-18s %s\n", e.name.c_str(), e.description.c_str());

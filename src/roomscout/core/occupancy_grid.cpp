@@ -23,12 +23,17 @@ void OccupancyGridOptions::validate() const {
 std::vector<ParameterRef> OccupancyGridOptions::parameters() {
   return {
       {"resolution_m", &resolution_m, "cell side [m]"},
-      {"log_odds_hit", &log_odds_hit, "log-odds added at a beam end point"},
-      {"log_odds_miss", &log_odds_miss, "log-odds added to cells a beam crosses"},
-      {"log_odds_min", &log_odds_min, "lower clamp of a cell's log-odds"},
+      {"log_odds_hit", &log_odds_hit,
+       "log-odds added at a beam end point (p = 0.83; worth almost four misses, so that wall cells "
+       "grazing beams cross stay occupied)"},
+      {"log_odds_miss", &log_odds_miss, "log-odds added to cells a beam crosses (p = 0.40)"},
+      {"log_odds_min", &log_odds_min,
+       "lower clamp of a cell's log-odds, so that a cell can change its mind"},
       {"log_odds_max", &log_odds_max, "upper clamp of a cell's log-odds"},
-      {"occupied_threshold", &occupied_threshold, "log-odds above which a cell is occupied"},
-      {"free_threshold", &free_threshold, "log-odds below which a cell is free"},
+      {"occupied_threshold", &occupied_threshold,
+       "log-odds above which a cell is occupied (p > 0.65)"},
+      {"free_threshold", &free_threshold,
+       "log-odds below which a cell is free (p < 0.41: one scan's miss)"},
   };
 }
 

@@ -19,16 +19,15 @@ static_assert(static_cast<int>(CellState::kUnknown) == 0 &&
               static_cast<int>(CellState::kOccupied) == 2);
 
 /// Log-odds update and classification constants of an OccupancyGrid.
+/// Its fields are documented in parameters() and printed by `roomscout options`.
 struct OccupancyGridOptions {
-  double resolution_m = 0.05;        ///< cell side [m]
-  double log_odds_hit = 1.6;         ///< added on a beam end point (p = 0.83): a hit outweighs
-                                     ///< four misses, so wall-face cells that grazing beams
-                                     ///< cross stay occupied instead of flickering to unknown
-  double log_odds_miss = -0.41;      ///< added on a cell a beam crossed (p = 0.40)
-  double log_odds_min = -2.0;        ///< clamp, so that a cell can change its mind
-  double log_odds_max = 3.5;         ///< clamp
-  double occupied_threshold = 0.62;  ///< log-odds above this: occupied (p > 0.65)
-  double free_threshold = -0.35;     ///< log-odds below this: free (p < 0.41; one scan's miss)
+  double resolution_m = 0.05;
+  double log_odds_hit = 1.6;
+  double log_odds_miss = -0.41;
+  double log_odds_min = -2.0;
+  double log_odds_max = 3.5;
+  double occupied_threshold = 0.62;
+  double free_threshold = -0.35;
 
   /// Throws OptionError when a value is out of range.
   void validate() const;

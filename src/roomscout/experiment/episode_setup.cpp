@@ -22,24 +22,30 @@ nlohmann::json EpisodeSetup::optionsJson() {
   return options;
 }
 
+std::vector<ParameterGroup> configGroups(
+    EpisodeSetup& setup, std::vector<std::unique_ptr<ExplorationStrategy>>& others) {
+  std::vector<ParameterGroup> groups = setup.config.groups();
+  for (ParameterGroup& g : setup.cloud.groups()) groups.push_back(std::move(g));
+  // Every method has a group of its own, so that one config file serves all methods.
+  for (const StrategyEntry& e : strategyRegistry()) {
+    if (e.name == setup.method) {
+      groups.push_back({e.name, setup.strategy->parameters()});
+    } else {
+      others.push_back(e.create(setup.seed));
+      groups.push_back({e.name, others.back()->parameters()});
+    }
+  }
+  return groups;
+}
+
 EpisodeSetup makeEpisodeSetup(std::string_view method, std::uint64_t seed,
                               const RunSettings& settings) {
   EpisodeSetup setup;
   setup.method = std::string(method);
   setup.seed = seed;
   setup.strategy = createStrategy(method, seed);
-  std::vector<ParameterGroup> groups = setup.config.groups();
-  for (ParameterGroup& g : setup.cloud.groups()) groups.push_back(std::move(g));
-  // Every method has a group of its own, so that one config file serves all methods.
   std::vector<std::unique_ptr<ExplorationStrategy>> others;
-  for (const StrategyEntry& e : strategyRegistry()) {
-    if (e.name == method) {
-      groups.push_back({e.name, setup.strategy->parameters()});
-    } else {
-      others.push_back(e.create(seed));
-      groups.push_back({e.name, others.back()->parameters()});
-    }
-  }
+  std::vector<ParameterGroup> groups = configGroups(setup, others);
   if (!settings.config_file.empty()) io::applyConfigFile(settings.config_file, groups);
   if (settings.max_time_s) setup.config.episode.max_time_s = *settings.max_time_s;
   if (settings.remove_floor) setup.cloud.remove_floor_ceiling = true;

@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -45,6 +46,13 @@ struct EpisodeSetup {
   /// method's own group included (other methods' groups are not).
   nlohmann::json optionsJson();
 };
+
+/// Every group a config file may set, pointing into `setup`: the episode's groups, the point
+/// cloud's, then one per registered method in the registry's order. The group of
+/// setup.method points into setup.strategy; the others into default strategies (created with
+/// setup.seed) appended to `others`, which must outlive the groups.
+std::vector<ParameterGroup> configGroups(EpisodeSetup& setup,
+                                         std::vector<std::unique_ptr<ExplorationStrategy>>& others);
 
 /// Creates the strategy `method` for `seed` and resolves every option. Every registered method
 /// has a group in the config file, so that one file serves all methods; groups of other

@@ -52,7 +52,9 @@ std::vector<ParameterRef> ImprovedRrtOptions::parameters() {
       {"info_radius_m", &info_radius_m, "half-side of the information gain square [m]"},
       {"hysteresis_radius_m", &hysteresis_radius_m, "gain bonus radius around the robot [m]"},
       {"hysteresis_gain", &hysteresis_gain, "gain factor within the hysteresis radius"},
-      {"gain_weight", &gain_weight, "score = gain_weight * G - distance"},
+      {"gain_weight", &gain_weight,
+       "score = gain_weight * G - distance, G the (unknown - occupied) area [m^2] in the "
+       "information gain square"},
       {"new_points_trigger", &new_points_trigger,
        "a goal selection runs after more new points than this"},
       {"iterations_trigger", &iterations_trigger,
@@ -72,18 +74,20 @@ std::vector<ParameterRef> ImprovedRrtOptions::parameters() {
       {"unsigned_count_quirk", &unsigned_count_quirk,
        "also select whenever points were removed since the last selection (the original's unsigned "
        "difference)"},
-      {"max_iterations_per_call", &max_iterations_per_call, "cap on iterations run in one call"},
+      {"max_iterations_per_call", &max_iterations_per_call,
+       "cap on the owed iterations run in one call"},
       {"min_unknown_area_m2", &min_unknown_area_m2,
        "end test: frontier cells with less unknown, non-lethal area behind them (inside the known "
        "box) are ignored [m^2]"},
       {"min_opening_m", &min_opening_m,
-       "end test: unknown space leaving the known box through an opening this wide is no pocket "
-       "[m] (0: off)"},
+       "end test: unknown space reaching the known box's border through an opening this wide is no "
+       "pocket, whatever its area [m]; 0: the border does not matter (unsafe: a corridor's "
+       "frontier at the box's edge counts as a pocket)"},
       {"pocket_check_period_s", &pocket_check_period_s,
-       "period of the end test's pocket search [s]"},
+       "period of the end test's pocket search (a full-map scan) [s]"},
       {"look_after_idle_s", &look_after_idle_s,
-       "no frontier point for this long: drive to look at the end test's remaining cells [s]; 0 = "
-       "never"},
+       "no frontier point for this long while the end test still counts reachable frontier cells: "
+       "drive to look at the nearest of them [s]; 0 = never (the original idles)"},
   };
 }
 

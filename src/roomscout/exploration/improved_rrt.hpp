@@ -70,35 +70,30 @@
 
 namespace roomscout {
 
+/// Its fields are documented in parameters() and printed by `roomscout options`.
 struct ImprovedRrtOptions {
-  double eta_m = 1.0;                   ///< tree step (single_rrt_node.launch)
-  double iterations_per_s = 100.0;      ///< RRT iterations per simulated second (rate 100)
-  double info_radius_m = 1.0;           ///< half-side of the information-gain square [m]
-  double hysteresis_radius_m = 3.0;     ///< gain bonus radius around the robot [m]
-  double hysteresis_gain = 2.0;         ///< gain factor within hysteresis_radius_m
-  double gain_weight = 3.0;             ///< score = gain_weight * G - d
-  int new_points_trigger = 25;          ///< a selection runs after more new points than this
-  int iterations_trigger = 500;         ///< ... or after more iterations than this
-  int min_goal_change_cells = 3;        ///< a new goal must move at least this far (L1, cells)
-  int end_check_iterations = 100;       ///< iterations between end tests
-  int end_checks = 5;                   ///< consecutive failing end tests that end exploration
-  int end_min_frontier_cells = 2;       ///< fewer reachable frontier cells fail the end test
-  int end_obstacle_l1_cells = 4;        ///< L1 margin of a reachable frontier cell to obstacles
-  double replan_period_s = 0.25;        ///< decide() period while driving [s]
-  double blacklist_radius_m = 0.3;      ///< failed goals drop points this close [m]
-  double observed_radius_m = 0.75;      ///< end test ignores frontier cells that stayed unknown
-                                        ///< with the robot this close (see markDisc) [m]
-  bool unsigned_count_quirk = false;    ///< reproduce the original's unsigned point count: a
-                                        ///< selection also whenever points were removed
-  int max_iterations_per_call = 20000;  ///< cap on owed iterations run in one call
-  double min_unknown_area_m2 = 4.0;     ///< end test ignores frontier cells with less unknown,
-                                     ///< non-lethal area behind them (see markUnknownPockets) [m^2]
-  double min_opening_m = 0.4;           ///< ... and fewer than this on the known box's border
-                                        ///< [m]; 0: the border does not matter (unsafe, see rrt)
-  double pocket_check_period_s = 10.0;  ///< period of that pocket search (a full-map scan) [s]
-  double look_after_idle_s = 30.0;      ///< with no frontier point for this long while the end test
-                                        ///< still counts reachable frontier cells, drive to look at
-                                        ///< the nearest of them [s]; 0 = never (the original idles)
+  double eta_m = 1.0;
+  double iterations_per_s = 100.0;
+  double info_radius_m = 1.0;
+  double hysteresis_radius_m = 3.0;
+  double hysteresis_gain = 2.0;
+  double gain_weight = 3.0;
+  int new_points_trigger = 25;
+  int iterations_trigger = 500;
+  int min_goal_change_cells = 3;
+  int end_check_iterations = 100;
+  int end_checks = 5;
+  int end_min_frontier_cells = 2;
+  int end_obstacle_l1_cells = 4;
+  double replan_period_s = 0.25;
+  double blacklist_radius_m = 0.3;
+  double observed_radius_m = 0.75;
+  bool unsigned_count_quirk = false;
+  int max_iterations_per_call = 20000;
+  double min_unknown_area_m2 = 4.0;
+  double min_opening_m = 0.4;
+  double pocket_check_period_s = 10.0;
+  double look_after_idle_s = 30.0;
 
   void validate() const;
   std::vector<ParameterRef> parameters();

@@ -25,7 +25,7 @@ void MmpfOptions::validate() const {
 
 std::vector<ParameterRef> MmpfOptions::parameters() {
   return {
-      {"cycle_period_s", &cycle_period_s, "seconds between potential-field cycles"},
+      {"cycle_period_s", &cycle_period_s, "time between potential-field cycles [s]"},
       {"obstacle_l1_cells", &obstacle_l1_cells,
        "frontier cells nearer (L1) to an obstacle are dropped [cells]"},
       {"cluster_l1_cells", &cluster_l1_cells, "cluster join distance (L1, exclusive) [cells]"},

@@ -44,15 +44,16 @@
 
 namespace roomscout {
 
+/// Its fields are documented in parameters() and printed by `roomscout options`.
 struct MmpfOptions {
-  double cycle_period_s = 1.0;      ///< one cycle per simulated second (rate 1)
-  int obstacle_l1_cells = 6;        ///< frontier cells nearer (L1) to an obstacle are dropped
-  int cluster_l1_cells = 3;         ///< a cell within L1 < this of a member joins the cluster
-  int max_descent_steps = 3000;     ///< gradient descent iterations
-  double river_step = 5.0;          ///< river potential per earlier visit, times the gain
-  int coarse_factor = 2;            ///< map cells per potential-field cell (see deviations)
-  double keep_goal_radius_m = 0.5;  ///< a goal with a frontier cell this close is kept [m]
-  int end_cycles = 5;               ///< cycles without any frontier cell that end exploration
+  double cycle_period_s = 1.0;
+  int obstacle_l1_cells = 6;
+  int cluster_l1_cells = 3;
+  int max_descent_steps = 3000;
+  double river_step = 5.0;
+  int coarse_factor = 2;
+  double keep_goal_radius_m = 0.5;
+  int end_cycles = 5;
 
   void validate() const;
   std::vector<ParameterRef> parameters();

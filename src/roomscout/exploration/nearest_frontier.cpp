@@ -28,16 +28,20 @@ void NearestFrontierOptions::validate() const {
 
 std::vector<ParameterRef> NearestFrontierOptions::parameters() {
   return {
-      {"potential_scale", &potential_scale, "weight of the distance to a frontier"},
-      {"gain_scale", &gain_scale, "weight of a frontier's size"},
+      {"potential_scale", &potential_scale,
+       "weight of the distance to a frontier (explore_lite's default)"},
+      {"gain_scale", &gain_scale, "weight of a frontier's size (explore_lite's default)"},
       {"min_frontier_size_m", &min_frontier_size_m, "smallest frontier considered [m]"},
-      {"planner_period_s", &planner_period_s, "seconds between re-decisions while driving"},
+      {"planner_period_s", &planner_period_s,
+       "seconds between re-decisions while driving (explore_lite's 1 / planner_frequency)"},
       {"progress_timeout_s", &progress_timeout_s,
        "blacklist a goal after no progress for this long [s]"},
-      {"blacklist_radius_m", &blacklist_radius_m, "half-size of the box around a failed goal [m]"},
+      {"blacklist_radius_m", &blacklist_radius_m,
+       "goals within a box of this half-size around a failed goal are skipped [m] (explore_lite: 5 "
+       "cells)"},
       {"max_centroid_offset_m", &max_centroid_offset_m,
-       "a centroid farther than this from its frontier is replaced by the cell nearest the robot "
-       "[m]"},
+       "a centroid farther than this from every cell of its frontier (an arc or ring around the "
+       "robot) is replaced by the frontier's traversable cell nearest the robot [m]"},
   };
 }
 

@@ -12,18 +12,15 @@
 
 namespace roomscout {
 
+/// Its fields are documented in parameters() and printed by `roomscout options`.
 struct NearestFrontierOptions {
-  double potential_scale = 3.0;        ///< weight of the distance term (explore_lite default)
-  double gain_scale = 1.0;             ///< weight of the frontier size term (explore_lite default)
-  double min_frontier_size_m = 0.5;    ///< frontiers shorter than this are ignored [m]
-  double planner_period_s = 3.0;       ///< re-decision period, 1/planner_frequency (0.33 Hz)
-  double progress_timeout_s = 30.0;    ///< blacklist a goal after this long without progress [s]
-  double blacklist_radius_m = 0.25;    ///< goals within this box half-size of a failed one are
-                                       ///< skipped (explore_lite: 5 cells)
-  double max_centroid_offset_m = 1.0;  ///< a centroid farther than this from every cell of its
-                                       ///< frontier (an arc or ring around the robot) is replaced
-                                       ///< by the cell nearest the robot; explore_lite has no
-                                       ///< such rule and dithers in open space
+  double potential_scale = 3.0;
+  double gain_scale = 1.0;
+  double min_frontier_size_m = 0.5;
+  double planner_period_s = 3.0;
+  double progress_timeout_s = 30.0;
+  double blacklist_radius_m = 0.25;
+  double max_centroid_offset_m = 1.0;
   void validate() const;
   std::vector<ParameterRef> parameters();
 };

@@ -43,12 +43,14 @@ std::vector<ParameterRef> RrtExplorationOptions::parameters() {
       {"bandwidth_m", &bandwidth_m, "mean-shift bandwidth of the frontier filter [m]"},
       {"info_radius_m", &info_radius_m, "information gain disc radius [m]"},
       {"min_info_gain_m2", &min_info_gain_m2,
-       "filter: least unknown area in a disc of info_radius/2 [m^2]"},
+       "filter: centroids with less unknown area in a disc of radius info_radius_m / 2 are dropped "
+       "[m^2]"},
       {"info_multiplier", &info_multiplier, "weight of the information gain in the revenue"},
       {"hysteresis_radius_m", &hysteresis_radius_m,
        "information gain bonus radius around the robot [m]"},
       {"hysteresis_gain", &hysteresis_gain, "information gain factor within the hysteresis radius"},
-      {"assign_period_s", &assign_period_s, "re-assignment period [s]"},
+      {"assign_period_s", &assign_period_s,
+       "re-assignment period (the original's delay_after_assignment) [s]"},
       {"blacklist_radius_m", &blacklist_radius_m,
        "centroids this close to a failed goal are skipped [m]"},
       {"end_check_period_s", &end_check_period_s, "period of the end test [s]"},
@@ -57,17 +59,19 @@ std::vector<ParameterRef> RrtExplorationOptions::parameters() {
        "fewer reachable frontier cells fail the end test"},
       {"observed_radius_m", &observed_radius_m,
        "end test: frontier cells still unknown this close to the robot are ignored [m]"},
-      {"max_samples_per_call", &max_samples_per_call, "cap on samples grown in one call, per tree"},
+      {"max_samples_per_call", &max_samples_per_call,
+       "cap on the owed samples grown in one call, per tree"},
       {"idle_end_s", &idle_end_s,
        "exploration ends after this long with no assignable centroid [s]"},
       {"min_unknown_area_m2", &min_unknown_area_m2,
        "end test: frontier cells with less unknown, non-lethal area behind them (inside the known "
        "box) are ignored [m^2]"},
       {"min_opening_m", &min_opening_m,
-       "end test: unknown space leaving the known box through an opening this wide is no pocket "
-       "[m] (0: off)"},
+       "end test: unknown space reaching the known box's border through an opening this wide is no "
+       "pocket, whatever its area [m]; 0: the border does not matter (unsafe: a corridor's "
+       "frontier at the box's edge counts as a pocket)"},
       {"pocket_check_period_s", &pocket_check_period_s,
-       "period of the end test's pocket search [s]"},
+       "period of the end test's pocket search (a full-map scan) [s]"},
   };
 }
 

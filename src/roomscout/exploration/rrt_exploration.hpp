@@ -66,32 +66,28 @@
 
 namespace roomscout {
 
+/// Its fields are documented in parameters() and printed by `roomscout options`.
 struct RrtExplorationOptions {
-  double global_eta_m = 15.0;        ///< global tree step (rrt_exploration launch files)
-  double local_eta_m = 1.0;          ///< local tree step
-  double samples_per_s = 100.0;      ///< samples per simulated second, per tree
-  double bandwidth_m = 0.3;          ///< mean-shift bandwidth of the filter
-  double info_radius_m = 1.0;        ///< information-gain disc radius of the assigner
-  double min_info_gain_m2 = 0.2;     ///< filter: centroids with less unknown area (disc of
-                                     ///< 0.5 * info_radius_m) are dropped [m^2]
-  double info_multiplier = 3.0;      ///< weight of IG in the revenue
-  double hysteresis_radius_m = 3.0;  ///< IG bonus radius around the robot [m]
-  double hysteresis_gain = 2.0;      ///< IG factor within hysteresis_radius_m
-  double assign_period_s = 0.5;      ///< re-assignment period (delay_after_assignment) [s]
-  double blacklist_radius_m = 0.3;   ///< failed goals exclude centroids this close [m]
-  double end_check_period_s = 1.0;   ///< end test period [s]
-  int end_checks = 5;                ///< consecutive failing end tests that end exploration
-  int end_min_frontier_cells = 2;    ///< fewer reachable frontier cells fail the end test
-  double observed_radius_m = 0.75;   ///< end test ignores frontier cells that stayed unknown
-                                     ///< with the robot this close (see markDisc) [m]
-  int max_samples_per_call = 20000;  ///< cap on owed samples grown in one call (per tree)
-  double idle_end_s = 30.0;          ///< no assignable centroid for this long ends exploration [s]
-  double min_unknown_area_m2 = 4.0;  ///< end test ignores frontier cells with less unknown,
-                                     ///< non-lethal area behind them (see markUnknownPockets) [m^2]
-  double min_opening_m = 0.4;        ///< ... and fewer than this on the known box's border
-                                     ///< [m]; 0: the border does not matter (unsafe: a
-                                     ///< corridor's frontier at the box's edge is a pocket)
-  double pocket_check_period_s = 10.0;  ///< period of that pocket search (a full-map scan) [s]
+  double global_eta_m = 15.0;
+  double local_eta_m = 1.0;
+  double samples_per_s = 100.0;
+  double bandwidth_m = 0.3;
+  double info_radius_m = 1.0;
+  double min_info_gain_m2 = 0.2;
+  double info_multiplier = 3.0;
+  double hysteresis_radius_m = 3.0;
+  double hysteresis_gain = 2.0;
+  double assign_period_s = 0.5;
+  double blacklist_radius_m = 0.3;
+  double end_check_period_s = 1.0;
+  int end_checks = 5;
+  int end_min_frontier_cells = 2;
+  double observed_radius_m = 0.75;
+  int max_samples_per_call = 20000;
+  double idle_end_s = 30.0;
+  double min_unknown_area_m2 = 4.0;
+  double min_opening_m = 0.4;
+  double pocket_check_period_s = 10.0;
 
   void validate() const;
   std::vector<ParameterRef> parameters();

@@ -54,8 +54,8 @@ std::vector<ParameterRef> TopoExplorationOptions::parameters() {
       {"min_cluster_points", &min_cluster_points,
        "frontier clusters with fewer points are dropped"},
       {"frontier_point_offset_m", &frontier_point_offset_m,
-       "a direction's frontier point lies this far past its cluster [m]"},
-      {"goal_offset_m", &goal_offset_m, "the goal lies this far past the cluster [m]"},
+       "a direction's frontier point lies this far past its cluster mean [m]"},
+      {"goal_offset_m", &goal_offset_m, "the goal lies this far past the cluster mean [m]"},
       {"drop_radius_m", &drop_radius_m,
        "a direction is dropped when the robot comes this close to its frontier point [m]"},
       {"centroid_weight", &centroid_weight,
@@ -71,10 +71,10 @@ std::vector<ParameterRef> TopoExplorationOptions::parameters() {
        "before ending, the frontier clusters of the whole map become directions of their nearest "
        "vertex"},
       {"refresh_min_cluster_points", &refresh_min_cluster_points,
-       "when the final refresh finds no cluster of min_cluster_points, clusters this large that "
-       "open onto refresh_open_unknown_m2 of unknown space count"},
+       "when the final refresh finds no cluster of min_cluster_points, clusters this large (about "
+       "0.5 m of frontier) that open onto refresh_open_unknown_m2 of unknown space count"},
       {"refresh_open_unknown_m2", &refresh_open_unknown_m2,
-       "unknown space a small cluster of the final refresh must open onto [m^2]"},
+       "unknown space (4-connected) a small cluster of the final refresh must open onto [m^2]"},
       {"observed_radius_m", &observed_radius_m,
        "the final refresh ignores frontiers this close to the robot's path [m]"},
       {"replan_period_s", &replan_period_s, "seconds between decisions while driving"},

@@ -89,37 +89,27 @@
 
 namespace roomscout {
 
+/// Its fields are documented in parameters() and printed by `roomscout options`.
 struct TopoExplorationOptions {
-  double vertex_spacing_m = 2.5;         ///< a new vertex where the robot is farther than this
-                                         ///< from every vertex [m]
-  double window_size_m = 12.0;           ///< side of the square map window of a vertex [m]
-  int frontier_kernel_cells = 4;         ///< side of a frontier test window [cells]
-  double cluster_eps_cells = 5.0;        ///< DBSCAN neighbourhood radius [cells]
-  int cluster_min_samples = 2;           ///< DBSCAN core point: this many points within eps
-                                         ///< (itself included)
-  int min_cluster_points = 100;          ///< clusters with fewer frontier points are dropped
-  double frontier_point_offset_m = 4.0;  ///< a direction's frontier point lies this far past its
-                                         ///< cluster mean [m]
-  double goal_offset_m = 6.0;            ///< the goal lies this far past the cluster mean [m]
-  double drop_radius_m = 3.0;            ///< a direction is dropped when the robot comes this
-                                         ///< close to its frontier point [m]
-  double centroid_weight = 0.2;          ///< score per metre from the centre of the map (epos)
-  double heading_weight = 0.0;           ///< score per radian of heading change (see header)
-  double goal_vertex_radius_m = 3.0;     ///< a goal this close to a vertex is given up [m];
-                                         ///< 0 = never
-  double stale_radius_m = 1.0;           ///< a direction with no frontier this close to its
-                                         ///< cluster is stale [m]
-  double goal_snap_radius_m = 1.0;       ///< the goal moves at most this far to a safe cell [m]
-  bool final_refresh = true;             ///< before ending, the map's frontier clusters become
-                                         ///< directions again (see header)
-  int refresh_min_cluster_points = 30;   ///< when the refresh finds no cluster of
-                                         ///< min_cluster_points: smaller clusters down to this
-                                         ///< many points (about 0.5 m of frontier) count ...
-  double refresh_open_unknown_m2 = 4.0;  ///< ... when the unknown space they open onto
-                                         ///< (4-connected) holds this much [m^2]
-  double observed_radius_m = 0.75;       ///< the final refresh ignores frontiers this close to
-                                         ///< where the robot has been [m]
-  double replan_period_s = 0.5;          ///< decide() period while driving [s]
+  double vertex_spacing_m = 2.5;
+  double window_size_m = 12.0;
+  int frontier_kernel_cells = 4;
+  double cluster_eps_cells = 5.0;
+  int cluster_min_samples = 2;
+  int min_cluster_points = 100;
+  double frontier_point_offset_m = 4.0;
+  double goal_offset_m = 6.0;
+  double drop_radius_m = 3.0;
+  double centroid_weight = 0.2;
+  double heading_weight = 0.0;
+  double goal_vertex_radius_m = 3.0;
+  double stale_radius_m = 1.0;
+  double goal_snap_radius_m = 1.0;
+  bool final_refresh = true;
+  int refresh_min_cluster_points = 30;
+  double refresh_open_unknown_m2 = 4.0;
+  double observed_radius_m = 0.75;
+  double replan_period_s = 0.5;
 
   /// Throws OptionError when an option is out of range.
   void validate() const;

@@ -28,14 +28,11 @@ namespace roomscout {
 
 enum class AnalysisMapKind { kTopological, kSemantic };
 
+/// Its fields are documented in parameters() and printed by `roomscout options`.
 struct AnalysisMapsOptions {
-  double period_s = 1.0;         ///< time between update checks [s]
-  double min_new_area_m2 = 2.0;  ///< update only when at least this much of the grid became
-                                 ///< known since the last update [m^2]: re-traversing known
-                                 ///< space changes nothing worth 10-30 ms of analysis
-  int topology_every = 1;        ///< the topological map is rebuilt on every n-th due update only
-                                 ///< (always on the first and at the end). No strategy reads it, so
-                                 ///< its final map is the same for any n; n > 1 only saves time
+  double period_s = 1.0;
+  double min_new_area_m2 = 2.0;
+  int topology_every = 1;
   RoomSegmenterOptions segmentation;
   TopologyBuilderOptions topology;
   void validate() const;

@@ -60,17 +60,19 @@ void GoalWatchdogOptions::validate() const {
 
 std::vector<ParameterRef> GoalWatchdogOptions::parameters() {
   return {
-      {"no_progress_timeout_s", &no_progress_timeout_s, "no progress this long fails the goal [s]"},
-      {"recovery_time_s", &recovery_time_s, "duration of a back-off recovery [s]"},
+      {"no_progress_timeout_s", &no_progress_timeout_s,
+       "the path to the goal not shrinking by 5 cm this long fails the goal [s]"},
+      {"recovery_time_s", &recovery_time_s, "how long the robot backs off when blocked [s]"},
       {"stall_timeout_s", &stall_timeout_s,
-       "no new map and little motion this long fails the goal [s]"},
+       "window of the stall watchdog: no new map and little motion this long fails the goal [s]"},
       {"stall_radius_m", &stall_radius_m,
-       "motion radius under which the robot counts as stalled [m]"},
+       "a robot that stayed within this radius of where a stall window began counts as stalled "
+       "[m]"},
       {"stall_min_new_area_m2", &stall_min_new_area_m2,
-       "new known free area under which a stall window counts [m^2]; simulator: 0 = 0.1 % of the "
-       "reachable floor"},
+       "growth of the known free area in a stall window under which the robot counts as stalled "
+       "[m^2]; 0 = never, but the simulator makes 0 0.1 % of the reachable floor"},
       {"max_decisions_per_step", &max_decisions_per_step,
-       "failed goals tried in a row before waiting"},
+       "failed goals tried in a row before waiting a second for new data"},
   };
 }
 
@@ -79,12 +81,15 @@ std::vector<ParameterRef> GoalWatchdogOptions::followerParameters() {
       {"goal_tolerance_m", &goal_tolerance_m,
        "distance to the path's last waypoint that counts as reached [m]"},
       {"lookahead_m", &lookahead_m,
-       "distance from the robot to the pure-pursuit carrot on the path ahead [m]"},
+       "distance from the robot to the pure-pursuit carrot on the path ahead; the watchdog seeks "
+       "the robot's projection on the path within two of them past its progress [m]"},
   };
 }
 
 std::vector<ParameterRef> GoalWatchdogOptions::laserParameters() {
-  return {{"range_max_m", &laser_range_m, "maximum range of the laser scanner [m]"}};
+  return {{"range_max_m", &laser_range_m,
+           "maximum range of the laser scanner: a new scan can only block the path this close to "
+           "the robot [m]"}};
 }
 
 void ExplorerOptions::validate() const {

@@ -32,23 +32,18 @@
 namespace roomscout {
 
 /// When a goal counts as reached or failed.
+/// Its fields are documented in parameters(), followerParameters() and laserParameters(),
+/// and printed by `roomscout options`.
 struct GoalWatchdogOptions {
-  double goal_tolerance_m = 0.15;       ///< distance to the path's end that counts as reached [m]
-  double lookahead_m = 0.35;            ///< the follower's look-ahead: the robot's projection on
-                                        ///< the path is searched within two of them past its
-                                        ///< progress [m]
-  double no_progress_timeout_s = 45.0;  ///< path to the goal not shrinking by 5 cm this long:
-                                        ///< the goal fails [s]
-  double recovery_time_s = 1.5;         ///< how long the robot backs off when blocked [s]
-  double stall_timeout_s = 60.0;        ///< window of the stall watchdog [s]
-  double stall_radius_m = 4.0;          ///< a robot that stayed within this radius of where the
-                                        ///< window began, while the known free area grew by
-                                        ///< less than stall_min_new_area_m2, is stalled [m]
-  double stall_min_new_area_m2 = 1.0;   ///< growth of the known free area in a window under
-                                        ///< which it counts as stalled (0: never) [m^2]
-  int max_decisions_per_step = 8;       ///< failed goals tried in a row before waiting a second
-  double laser_range_m = 3.5;           ///< the laser's maximum range: a new scan can only have
-                                        ///< blocked the path this close to the robot [m]
+  double goal_tolerance_m = 0.15;
+  double lookahead_m = 0.35;
+  double no_progress_timeout_s = 45.0;
+  double recovery_time_s = 1.5;
+  double stall_timeout_s = 60.0;
+  double stall_radius_m = 4.0;
+  double stall_min_new_area_m2 = 1.0;
+  int max_decisions_per_step = 8;
+  double laser_range_m = 3.5;
   void validate() const;
   /// Group "episode" (the watchdogs).
   std::vector<ParameterRef> parameters();

@@ -94,6 +94,49 @@ nlohmann::json parametersToJson(const std::vector<ParameterRef>& params) {
   return out;
 }
 
+std::string parameterValueYaml(const ParameterRef& param) {
+  return std::visit(
+      [](auto* storage) -> std::string {
+        using T = std::remove_pointer_t<decltype(storage)>;
+        if constexpr (std::is_same_v<T, double>) {
+          return formatDouble(*storage);
+        } else if constexpr (std::is_same_v<T, int>) {
+          return std::to_string(*storage);
+        } else if constexpr (std::is_same_v<T, bool>) {
+          return *storage ? "true" : "false";
+        } else {
+          const std::string& text = *storage;
+          // Plain only when YAML cannot read it as anything but this string.
+          bool plain = !text.empty() && !yamlBool(YAML::Node(text)).has_value() &&
+                       !yamlDouble(YAML::Node(text), false).has_value() && text != "null" &&
+                       text != "Null" && text != "NULL" && text != "~";
+          for (const char c : text) {
+            const bool word = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') ||
+                              (c >= '0' && c <= '9') || c == '_' || c == '-' || c == '.' ||
+                              c == '/';
+            if (!word) plain = false;
+          }
+          if (!text.empty() && (text.front() == '-' || text.front() == '.')) plain = false;
+          if (plain) return text;
+          std::string quoted = "\"";
+          for (const char c : text) {
+            if (c == '"' || c == '\\') {
+              quoted += '\\';
+              quoted += c;
+            } else if (c == '\n') {
+              quoted += "\\n";
+            } else if (c == '\t') {
+              quoted += "\\t";
+            } else {
+              quoted += c;
+            }
+          }
+          return quoted + "\"";
+        }
+      },
+      param.value);
+}
+
 void applyConfigFile(const std::filesystem::path& path, std::vector<ParameterGroup>& groups) {
   const std::string source = path.string();
   const YAML::Node root = parseYaml(readFile(path), source);

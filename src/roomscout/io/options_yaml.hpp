@@ -25,6 +25,11 @@ void applyParameters(const YAML::Node& node, std::vector<ParameterRef> params,
 /// The parameters' current values as a JSON object {name: value}.
 nlohmann::json parametersToJson(const std::vector<ParameterRef>& params);
 
+/// The parameter's current value as a YAML scalar that applyParameters reads back as the same
+/// value: "0.05", "360", "true", and a string plain when YAML reads it as that string
+/// ("fixed"), double-quoted otherwise ("\"\"", "\"true\"").
+std::string parameterValueYaml(const ParameterRef& param);
+
 /// Applies a config file whose top-level keys are group names, each holding a map of that
 /// group's options. YAML syntax errors throw InputError(path, "line N: ..."); a top level that
 /// is not a map throws InputError; an unknown group throws OptionError listing the groups;

@@ -18,12 +18,12 @@
 
 namespace roomscout {
 
+/// Its fields are documented in parameters() and printed by `roomscout options`.
 struct KeyframeOptions {
-  bool every_scan = false;       ///< true: every scan is a keyframe (no selection)
-  double distance_m = 1.0;       ///< translation since the last keyframe that makes a new one [m]
-  double angle_rad = 0.2;        ///< rotation since the last keyframe that makes a new one [rad]
-  double turn_min_move_m = 0.1;  ///< ... provided the robot also moved this far [m];
-                                 ///< 0: LIO-SAM's rule exactly
+  bool every_scan = false;
+  double distance_m = 1.0;
+  double angle_rad = 0.2;
+  double turn_min_move_m = 0.1;
   void validate() const;
   std::vector<ParameterRef> parameters();
   /// One line for run records, e.g. "keyframes: every 1 m or 0.2 rad (LIO-SAM rule)".

@@ -46,7 +46,9 @@ void PointCloudMapOptions::validate() const {
 std::vector<ParameterRef> PointCloudMapOptions::parameters() {
   return {
       {"voxel_size_m", &voxel_size_m, "voxel side of the point cloud map [m]"},
-      {"max_points", &max_points, "most voxels (points) the map holds"},
+      {"max_points", &max_points,
+       "most voxels (points) the map holds, about 70 bytes each; beyond it no voxel is created, "
+       "but points in existing voxels still count"},
   };
 }
 

@@ -14,10 +14,10 @@
 
 namespace roomscout {
 
+/// Its fields are documented in parameters() and printed by `roomscout options`.
 struct PointCloudMapOptions {
-  double voxel_size_m = 0.05;  ///< voxel side [m]
-  int max_points = 5000000;    ///< memory bound: voxels beyond this many are not created (at
-                               ///< most about 70 bytes each); points in existing voxels still count
+  double voxel_size_m = 0.05;
+  int max_points = 5000000;
   void validate() const;
   std::vector<ParameterRef> parameters();
 };

@@ -393,7 +393,8 @@ std::vector<ParameterRef> RoomSegmenterOptions::parameters() {
       {"door_cut_max_width_m", &door_cut_max_width_m,
        "... and at most this wide are doors, cut first (0: off) [m]"},
       {"wall_extension_max_m", &wall_extension_max_m,
-       "a wall end is extended across gaps up to this long (0: off) [m]"},
+       "a wall end is extended across a gap up to this long to any obstacle, closing a wide "
+       "opening (0: off) [m]"},
       {"jamb_min_length_m", &jamb_min_length_m,
        "a wall end counts as a door jamb when this long [m]"},
       {"wall_max_thickness_m", &wall_max_thickness_m, "... and at most this thick [m]"},

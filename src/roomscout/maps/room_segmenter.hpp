@@ -23,21 +23,20 @@
 
 namespace roomscout {
 
+/// Its fields are documented in parameters() and printed by `roomscout options`.
 struct RoomSegmenterOptions {
-  double furniture_max_area_m2 = 1.0;  ///< enclosed obstacle blobs up to this area are filled [m^2]
-  double furniture_max_extent_m = 2.0;  ///< ... and up to this bounding-box side [m]
-  double door_cut_min_width_m = 0.5;    ///< gaps in straight walls at least this wide ... [m]
-  double door_cut_max_width_m = 2.0;    ///< ... and at most this wide are doors, cut first [m]
-  double wall_extension_max_m = 1.5;    ///< a wall end is extended across a gap up to this
-                                        ///< long to any obstacle: a wide opening (0: off) [m]
-  double jamb_min_length_m = 0.3;       ///< a wall end counts as a door jamb when this long [m]
-  double wall_max_thickness_m = 0.4;    ///< ... and at most this thick [m]
-  double door_max_width_m = 1.6;        ///< necks wider than this never separate rooms [m]
-  double neck_ratio = 0.75;             ///< a neck separates two cores when its half-width is at
-                                        ///< most this fraction of both cores' clearance
-  double min_core_clearance_m = 0.45;   ///< a room core is at least this far from walls [m]
-  double min_room_area_m2 = 2.0;        ///< smaller segments merge into a neighbour [m^2]
-  double min_isolated_area_m2 = 0.5;  ///< smaller free patches without neighbours are no room [m^2]
+  double furniture_max_area_m2 = 1.0;
+  double furniture_max_extent_m = 2.0;
+  double door_cut_min_width_m = 0.5;
+  double door_cut_max_width_m = 2.0;
+  double wall_extension_max_m = 1.5;
+  double jamb_min_length_m = 0.3;
+  double wall_max_thickness_m = 0.4;
+  double door_max_width_m = 1.6;
+  double neck_ratio = 0.75;
+  double min_core_clearance_m = 0.45;
+  double min_room_area_m2 = 2.0;
+  double min_isolated_area_m2 = 0.5;
 
   /// Throws OptionError when a value is out of range.
   void validate() const;

@@ -59,16 +59,18 @@ void TopologyBuilderOptions::validate() const {
 std::vector<ParameterRef> TopologyBuilderOptions::parameters() {
   return {
       {"opening_radius_m", &opening_radius_m,
-       "opening of the free space, below half the narrowest door [m]"},
+       "opening of the free space; keep it below half the narrowest door, or doors get cut [m]"},
       {"furniture_max_area_m2", &furniture_max_area_m2,
-       "enclosed obstacle blobs up to this area are filled [m^2]"},
+       "enclosed obstacle blobs up to this area are filled, so furniture makes no loops [m^2]"},
       {"furniture_max_extent_m", &furniture_max_extent_m,
        "... and up to this bounding-box side [m]"},
       {"min_free_area_m2", &min_free_area_m2, "smaller free patches get no skeleton [m^2]"},
       {"spur_min_length_m", &spur_min_length_m, "dead-end edges shorter than this are pruned [m]"},
       {"spur_disc_factor", &spur_disc_factor,
-       "dead ends within this many junction clearances are pruned"},
-      {"simplify_tolerance_m", &simplify_tolerance_m, "polyline simplification tolerance [m]"},
+       "dead ends within this many times a junction's clearance of it are pruned too (room "
+       "corners)"},
+      {"simplify_tolerance_m", &simplify_tolerance_m,
+       "polyline simplification (Douglas-Peucker) tolerance [m]"},
   };
 }
 

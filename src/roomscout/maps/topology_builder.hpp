@@ -16,17 +16,15 @@ namespace roomscout {
 
 class SemanticMap;
 
+/// Its fields are documented in parameters() and printed by `roomscout options`.
 struct TopologyBuilderOptions {
-  double opening_radius_m = 0.1;        ///< opening of the free space; keep below half the
-                                        ///< narrowest door, or doors get cut [m]
-  double furniture_max_area_m2 = 1.0;   ///< enclosed obstacle blobs up to this area are filled,
-                                        ///< so furniture makes no loops [m^2]
-  double furniture_max_extent_m = 2.0;  ///< ... and up to this bounding-box side [m]
-  double min_free_area_m2 = 0.25;       ///< smaller free patches get no skeleton [m^2]
-  double spur_min_length_m = 0.4;       ///< dead-end edges shorter than this are pruned [m]
-  double spur_disc_factor = 1.5;        ///< dead ends within this many times the junction's
-                                        ///< clearance of it are pruned too (room corners)
-  double simplify_tolerance_m = 0.05;   ///< polyline simplification (Douglas-Peucker) [m]
+  double opening_radius_m = 0.1;
+  double furniture_max_area_m2 = 1.0;
+  double furniture_max_extent_m = 2.0;
+  double min_free_area_m2 = 0.25;
+  double spur_min_length_m = 0.4;
+  double spur_disc_factor = 1.5;
+  double simplify_tolerance_m = 0.05;
 
   /// Throws OptionError when a value is out of range.
   void validate() const;

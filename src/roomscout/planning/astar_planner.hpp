@@ -9,10 +9,10 @@
 
 namespace roomscout {
 
+/// Its fields are documented in parameters() and printed by `roomscout options`.
 struct AStarOptions {
-  double goal_tolerance_m = 0.3;  ///< if the goal cell is lethal, the nearest traversable cell
-                                  ///< within this distance becomes the goal [m]
-  bool allow_unknown = true;      ///< may the path cross unknown cells
+  double goal_tolerance_m = 0.3;
+  bool allow_unknown = true;
   void validate() const;
   std::vector<ParameterRef> parameters();
 };

@@ -36,7 +36,7 @@ void CostmapOptions::validate() const {
 
 std::vector<ParameterRef> CostmapOptions::parameters() {
   return {
-      {"robot_radius_m", &robot_radius_m, "robot footprint radius [m]"},
+      {"robot_radius_m", &robot_radius_m, "robot footprint radius (TurtleBot3 Burger) [m]"},
       {"inflation_margin_m", &inflation_margin_m,
        "extra clearance beyond the robot radius that is still lethal [m]"},
       {"cost_scaling_distance_m", &cost_scaling_distance_m,

@@ -10,12 +10,13 @@
 
 namespace roomscout {
 
+/// Its fields are documented in parameters() and printed by `roomscout options`.
 struct CostmapOptions {
-  double robot_radius_m = 0.105;          ///< TurtleBot3 Burger footprint radius [m]
-  double inflation_margin_m = 0.05;       ///< extra lethal clearance beyond the radius [m]
-  double cost_scaling_distance_m = 0.35;  ///< clearance [m] under which the soft cost rises
-  double max_soft_cost = 8.0;             ///< soft cost at the lethal boundary (per cell step)
-  double unknown_cost = 1.0;              ///< extra cost of stepping into unknown space (per cell)
+  double robot_radius_m = 0.105;
+  double inflation_margin_m = 0.05;
+  double cost_scaling_distance_m = 0.35;
+  double max_soft_cost = 8.0;
+  double unknown_cost = 1.0;
 
   /// Lethal clearance: a cell centre closer than this to an occupied cell centre is lethal [m].
   double lethalRadius_m() const { return robot_radius_m + inflation_margin_m; }

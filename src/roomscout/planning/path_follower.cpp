@@ -42,8 +42,10 @@ void PathFollowerOptions::validate() const {
 
 std::vector<ParameterRef> PathFollowerOptions::parameters() {
   return {
-      {"max_linear_speed_mps", &max_linear_speed_mps, "forward speed limit [m/s]"},
-      {"max_angular_speed_radps", &max_angular_speed_radps, "turn rate limit [rad/s]"},
+      {"max_linear_speed_mps", &max_linear_speed_mps,
+       "forward speed limit (TurtleBot3 Burger) [m/s]"},
+      {"max_angular_speed_radps", &max_angular_speed_radps,
+       "turn rate limit (TurtleBot3 Burger) [rad/s]"},
       {"lookahead_m", &lookahead_m,
        "distance from the robot to the pure-pursuit carrot on the path ahead [m]"},
       {"goal_tolerance_m", &goal_tolerance_m,

@@ -10,13 +10,14 @@
 
 namespace roomscout {
 
+/// Its fields are documented in parameters() and printed by `roomscout options`.
 struct PathFollowerOptions {
-  double max_linear_speed_mps = 0.22;     ///< TurtleBot3 Burger limit [m/s]
-  double max_angular_speed_radps = 2.84;  ///< TurtleBot3 Burger limit [rad/s]
-  double lookahead_m = 0.35;              ///< pure-pursuit carrot distance along the path [m]
-  double goal_tolerance_m = 0.15;    ///< distance to the last waypoint that counts as reached [m]
-  double rotate_in_place_rad = 0.8;  ///< heading error above which the robot turns on the spot
-  double heading_gain = 2.5;         ///< angular speed per radian of heading error [1/s]
+  double max_linear_speed_mps = 0.22;
+  double max_angular_speed_radps = 2.84;
+  double lookahead_m = 0.35;
+  double goal_tolerance_m = 0.15;
+  double rotate_in_place_rad = 0.8;
+  double heading_gain = 2.5;
   void validate() const;
   std::vector<ParameterRef> parameters();
 };

@@ -34,14 +34,17 @@ void EpisodeOptions::validate() const {
 
 std::vector<ParameterRef> EpisodeOptions::parameters() {
   return {
-      {"dt_s", &dt_s, "simulation step [s]"},
-      {"max_time_s", &max_time_s, "simulated time limit [s], 0 = automatic"},
+      {"dt_s", &dt_s, "simulation and control step [s]"},
+      {"max_time_s", &max_time_s,
+       "simulated time limit [s]; 0 = 600 s + 5 s per m^2 of reachable floor"},
       {"metrics_period_s", &metrics_period_s, "exploration rate sampling period [s]"},
-      {"completion_rate", &completion_rate, "rate that counts as fully explored"},
-      {"stuck_timeout_s", &stuck_timeout_s, "blocked this long triggers a recovery [s]"},
+      {"completion_rate", &completion_rate,
+       "exploration rate that counts as fully explored (T98, L98)"},
+      {"stuck_timeout_s", &stuck_timeout_s,
+       "commanded motion blocked this long: the robot counts as blocked and backs off [s]"},
       {"room_dwell_s", &room_dwell_s, "time in a room before it counts as entered [s]"},
       {"map_mode", &map_mode,
-       "map the Explorer sees: fixed (the world's extent) or growing (as SLAM)"},
+       "map the Explorer sees: fixed (the world's extent) or growing (as a SLAM map grows)"},
       {"map_margin_m", &map_margin_m, "growing map: unknown border around the known area [m]"},
   };
 }

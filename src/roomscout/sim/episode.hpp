@@ -32,17 +32,16 @@ enum class MapMode {
              ///< origin moving as the map grows
 };
 
+/// Its fields are documented in parameters() and printed by `roomscout options`.
 struct EpisodeOptions {
-  double dt_s = 0.05;              ///< simulation and control step [s]
-  double max_time_s = 0.0;         ///< simulated time limit [s]; 0 = 600 s + 5 s per m^2
-                                   ///< of reachable floor
-  double metrics_period_s = 1.0;   ///< how often the exploration rate is sampled [s]
-  double completion_rate = 0.98;   ///< rate that counts as fully explored (T98, L98)
-  double stuck_timeout_s = 2.0;    ///< commanded motion blocked this long: the driver
-                                   ///< reports the robot blocked [s]
-  double room_dwell_s = 2.0;       ///< time inside a room before it counts as entered [s]
-  std::string map_mode = "fixed";  ///< "fixed" or "growing" (MapMode)
-  double map_margin_m = 1.0;       ///< growing map: unknown border around the known area [m]
+  double dt_s = 0.05;
+  double max_time_s = 0.0;
+  double metrics_period_s = 1.0;
+  double completion_rate = 0.98;
+  double stuck_timeout_s = 2.0;
+  double room_dwell_s = 2.0;
+  std::string map_mode = "fixed";
+  double map_margin_m = 1.0;
   MapMode mapMode() const;
   void validate() const;
   std::vector<ParameterRef> parameters();

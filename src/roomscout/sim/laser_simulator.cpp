@@ -18,9 +18,9 @@ void LaserOptions::validate() const {
 
 std::vector<ParameterRef> LaserOptions::parameters() {
   return {
-      {"num_beams", &num_beams, "beams per revolution"},
-      {"range_min_m", &range_min_m, "minimum range [m]"},
-      {"range_max_m", &range_max_m, "maximum range [m]"},
+      {"num_beams", &num_beams, "beams per revolution, evenly spaced over 360 degrees"},
+      {"range_min_m", &range_min_m, "minimum range: closer returns are dropped [m]"},
+      {"range_max_m", &range_max_m, "maximum range: no return beyond it [m]"},
       {"rate_hz", &rate_hz, "scans per second"},
   };
 }

@@ -12,11 +12,12 @@
 
 namespace roomscout::sim {
 
+/// Its fields are documented in parameters() and printed by `roomscout options`.
 struct LaserOptions {
-  int num_beams = 360;        ///< beams per revolution, evenly spaced over 360 degrees
-  double range_min_m = 0.12;  ///< closer returns are dropped [m]
-  double range_max_m = 3.5;   ///< no return beyond [m]
-  double rate_hz = 5.0;       ///< scans per second
+  int num_beams = 360;
+  double range_min_m = 0.12;
+  double range_max_m = 3.5;
+  double rate_hz = 5.0;
   void validate() const;
   std::vector<ParameterRef> parameters();
 };

@@ -33,14 +33,17 @@ void LidarOptions::validate() const {
 
 std::vector<ParameterRef> LidarOptions::parameters() {
   return {
-      {"num_rings", &num_rings, "beams per azimuth column"},
+      {"num_rings", &num_rings, "beams per azimuth column (VLP-16: 16)"},
       {"elevation_min_deg", &elevation_min_deg, "lowest ring's elevation [deg]"},
-      {"elevation_max_deg", &elevation_max_deg, "highest ring's elevation [deg]"},
-      {"azimuth_step_deg", &azimuth_step_deg, "azimuth between columns [deg]"},
-      {"range_min_m", &range_min_m, "minimum range [m]"},
-      {"range_max_m", &range_max_m, "maximum range [m]"},
+      {"elevation_max_deg", &elevation_max_deg,
+       "highest ring's elevation [deg]; the rings are evenly spaced"},
+      {"azimuth_step_deg", &azimuth_step_deg,
+       "azimuth between columns [deg] (VLP-16 at 10 Hz: 0.2, 1800 columns)"},
+      {"range_min_m", &range_min_m, "minimum range: closer returns are dropped [m]"},
+      {"range_max_m", &range_max_m, "maximum range: no return beyond it [m]"},
       {"rate_hz", &rate_hz, "revolutions per second"},
-      {"mount_height_m", &mount_height_m, "sensor height above the floor [m]"},
+      {"mount_height_m", &mount_height_m,
+       "sensor origin above the floor, on the robot's centre [m]"},
   };
 }
 

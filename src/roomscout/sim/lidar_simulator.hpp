@@ -23,15 +23,16 @@
 
 namespace roomscout::sim {
 
+/// Its fields are documented in parameters() and printed by `roomscout options`.
 struct LidarOptions {
-  int num_rings = 16;                ///< beams per azimuth column (VLP-16: 16)
-  double elevation_min_deg = -15.0;  ///< lowest ring's elevation [deg]
-  double elevation_max_deg = 15.0;   ///< highest ring's elevation [deg]; rings evenly spaced
-  double azimuth_step_deg = 0.2;     ///< between columns [deg] (VLP-16 at 10 Hz: 0.2, 1800 columns)
-  double range_min_m = 0.5;          ///< closer returns are dropped [m]
-  double range_max_m = 100.0;        ///< no return beyond [m]
-  double rate_hz = 10.0;             ///< revolutions per second
-  double mount_height_m = 0.5;       ///< sensor origin above the floor, on the robot's centre [m]
+  int num_rings = 16;
+  double elevation_min_deg = -15.0;
+  double elevation_max_deg = 15.0;
+  double azimuth_step_deg = 0.2;
+  double range_min_m = 0.5;
+  double range_max_m = 100.0;
+  double rate_hz = 10.0;
+  double mount_height_m = 0.5;
   void validate() const;
   std::vector<ParameterRef> parameters();
 };

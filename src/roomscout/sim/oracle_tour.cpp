@@ -42,16 +42,28 @@ void OracleTourOptions::validate() const {
 
 std::vector<ParameterRef> OracleTourOptions::parameters() {
   return {
-      {"map_resolution_m", &map_resolution_m, "grid of the exploration truth and the paths [m]"},
+      {"map_resolution_m", &map_resolution_m,
+       "grid of the exploration truth and the paths [m] (the mapper's mapping.resolution_m)"},
       {"lethal_radius_m", &lethal_radius_m,
-       "clearance the robot centre keeps from solid cells [m]"},
-      {"sensor_range_m", &sensor_range_m, "range within which a viewpoint sees free cells [m]"},
-      {"rays_per_viewpoint", &rays_per_viewpoint, "rays cast from each candidate viewpoint"},
+       "clearance the robot centre keeps from solid cells [m] (the costmap's robot radius + "
+       "inflation margin)"},
+      {"sensor_range_m", &sensor_range_m,
+       "a viewpoint sees the free cells in line of sight within this range [m] "
+       "(laser.range_max_m)"},
+      {"rays_per_viewpoint", &rays_per_viewpoint,
+       "rays cast from each candidate viewpoint, evenly spaced (at 3.5 m, 360 rays are 6 cm apart, "
+       "finer than the cells)"},
       {"viewpoint_spacing_m", &viewpoint_spacing_m,
-       "side of the square per candidate viewpoint [m]"},
-      {"visibility_cell_m", &visibility_cell_m, "cell side on which coverage is counted [m]"},
-      {"target_coverage", &target_coverage, "fraction of reachable free space to see"},
-      {"smooth_legs", &smooth_legs, "measure legs on line-of-sight shortened grid paths"},
+       "one candidate viewpoint per square of this side: its traversable cell nearest the square's "
+       "centre [m]"},
+      {"visibility_cell_m", &visibility_cell_m,
+       "coverage is counted on cells of this side (a multiple of map_resolution_m), each weighted "
+       "by the reachable map cells in it [m]"},
+      {"target_coverage", &target_coverage,
+       "the greedy set cover stops at this fraction of the reachable free space"},
+      {"smooth_legs", &smooth_legs,
+       "measure each leg on its grid path shortened by line-of-sight string pulling (true), or on "
+       "the 8-connected grid path itself (false; up to 8 % longer than the straight segment)"},
   };
 }
 

@@ -17,26 +17,17 @@ namespace roomscout::sim {
 
 struct EpisodeConfig;
 
+/// Its fields are documented in parameters(); no config group sets them (see
+/// oracleTourOptionsFor()), so `roomscout options` does not print them.
 struct OracleTourOptions {
-  double map_resolution_m = 0.05;    ///< grid of the exploration truth and of the paths [m]
-                                     ///< (the mapper's, OccupancyGridOptions::resolution_m)
-  double lethal_radius_m = 0.155;    ///< clearance the robot centre keeps from solid cells [m]
-                                     ///< (CostmapOptions::lethalRadius_m(): radius + margin)
-  double sensor_range_m = 3.5;       ///< what a viewpoint sees: free cells in line of sight
-                                     ///< within this range [m] (LaserOptions::range_max_m)
-  int rays_per_viewpoint = 360;      ///< rays cast from each candidate, evenly spaced; at
-                                     ///< 3.5 m they are 6 cm apart, finer than the cells
-  double viewpoint_spacing_m = 0.5;  ///< one candidate per square of this side: its
-                                     ///< traversable cell nearest the square's centre [m]
-  double visibility_cell_m = 0.1;    ///< coverage is counted on cells of this side (a
-                                     ///< multiple of map_resolution_m), each weighted by
-                                     ///< the reachable map cells in it [m]
-  double target_coverage = 0.98;     ///< greedy set cover stops at this fraction of the
-                                     ///< reachable free space (DESIGN's 98 %)
-  bool smooth_legs = true;           ///< measure each leg on its grid path shortened by
-                                     ///< line-of-sight string pulling (true), or on the
-                                     ///< 8-connected grid path itself (false; up to 8 %
-                                     ///< longer than the straight segment)
+  double map_resolution_m = 0.05;
+  double lethal_radius_m = 0.155;
+  double sensor_range_m = 3.5;
+  int rays_per_viewpoint = 360;
+  double viewpoint_spacing_m = 0.5;
+  double visibility_cell_m = 0.1;
+  double target_coverage = 0.98;
+  bool smooth_legs = true;
 
   /// Throws OptionError when a value is out of range.
   void validate() const;

@@ -13,8 +13,9 @@ void PointCloudObserverOptions::validate() const {
 
 std::vector<ParameterGroup> PointCloudObserverOptions::groups() {
   std::vector<ParameterRef> map_parameters = map.parameters();
-  map_parameters.push_back({"remove_floor_ceiling", &remove_floor_ceiling,
-                            "drop returns from the floor and ceiling planes"});
+  map_parameters.push_back(
+      {"remove_floor_ceiling", &remove_floor_ceiling,
+       "drop returns from the floor and ceiling planes (false keeps them, as in LIO-SAM's map)"});
   return {{"lidar", lidar.parameters()},
           {"pointcloud", map_parameters},
           {"keyframes", keyframes.parameters()}};

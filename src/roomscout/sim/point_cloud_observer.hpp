@@ -20,14 +20,14 @@
 
 namespace roomscout::sim {
 
+/// Its fields are documented in groups() and printed by `roomscout options`.
 struct PointCloudObserverOptions {
   LidarOptions lidar;
   PointCloudMapOptions map;
   KeyframeOptions keyframes;
-  bool remove_floor_ceiling = false;  ///< drop returns from the floor and ceiling planes
-                                      ///< (default keeps them, as in LIO-SAM's map)
-  RangeNoise lidar_noise;             ///< the lidar's range noise: noise.profile's, set by the
-                                      ///< caller (not a YAML key of its own)
+  bool remove_floor_ceiling = false;
+  RangeNoise lidar_noise;  ///< the lidar's range noise: noise.profile's, set by the
+                           ///< caller (not a YAML key of its own)
   void validate() const;
   /// Groups "lidar", "pointcloud" (map options and remove_floor_ceiling) and "keyframes".
   std::vector<ParameterGroup> groups();

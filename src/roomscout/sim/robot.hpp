@@ -8,10 +8,11 @@
 
 namespace roomscout::sim {
 
+/// Its fields are documented in parameters() and printed by `roomscout options`.
 struct RobotOptions {
-  double radius_m = 0.105;                ///< footprint radius [m]
-  double max_linear_speed_mps = 0.22;     ///< [m/s]
-  double max_angular_speed_radps = 2.84;  ///< [rad/s]
+  double radius_m = 0.105;
+  double max_linear_speed_mps = 0.22;
+  double max_angular_speed_radps = 2.84;
   void validate() const;
   std::vector<ParameterRef> parameters();
 };

@@ -60,9 +60,10 @@ struct NoiseProfile {
 };
 
 /// The config group "noise": one key, profile (default "none").
+/// Its fields are documented in parameters() and printed by `roomscout options`.
 struct NoiseOptions {
-  std::string profile = "none";  ///< none | tb3 | harsh
-  void validate() const;         ///< NoiseProfile::named(profile)
+  std::string profile = "none";
+  void validate() const;  ///< NoiseProfile::named(profile)
   std::vector<ParameterRef> parameters();
   NoiseProfile resolved() const;
 };

@@ -22,10 +22,11 @@ void WorldModelOptions::validate() const {
 std::vector<ParameterRef> WorldModelOptions::parameters() {
   return {
       {"raster_resolution_m", &raster_resolution_m,
-       "ground-truth raster cell of geometric worlds [m]"},
-      {"laser_height_m", &laser_height_m, "height of the 2D laser plane [m]"},
+       "ground-truth raster cell of geometric worlds [m] (image worlds use their own pixel size)"},
+      {"laser_height_m", &laser_height_m, "height of the 2D laser plane above the floor [m]"},
       {"robot_height_m", &robot_height_m, "objects whose bottom is below this block the robot [m]"},
-      {"robot_radius_m", &robot_radius_m, "robot footprint radius [m]"},
+      {"robot_radius_m", &robot_radius_m,
+       "robot footprint radius, for clearance queries and the start pose choice [m]"},
   };
 }
 

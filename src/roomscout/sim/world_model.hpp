@@ -11,12 +11,12 @@
 
 namespace roomscout::sim {
 
+/// Its fields are documented in parameters() and printed by `roomscout options`.
 struct WorldModelOptions {
-  double raster_resolution_m = 0.025;  ///< raster cell side for geometric worlds [m]
-                                       ///< (image worlds use their own pixel size)
-  double laser_height_m = 0.18;        ///< height of the 2D laser plane above the floor [m]
-  double robot_height_m = 0.19;        ///< anything whose bottom is lower blocks the robot [m]
-  double robot_radius_m = 0.105;       ///< for clearance queries and the start pose choice [m]
+  double raster_resolution_m = 0.025;
+  double laser_height_m = 0.18;
+  double robot_height_m = 0.19;
+  double robot_radius_m = 0.105;
   void validate() const;
   std::vector<ParameterRef> parameters();
 };

@@ -47,15 +47,18 @@ std::vector<ParameterRef> SlamOptions::parameters() {
       {"mode", &mode,
        "none (the true pose), icp (MRPT ICP-SLAM) or rbpf (MRPT particle-filter SLAM)"},
       {"match_distance_m", &match_distance_m,
-       "distance driven before SLAM corrects the pose with a scan [m]"},
+       "distance driven (or match_angle_deg turned) before SLAM corrects the pose with the next "
+       "scan; in between the pose follows the odometry [m]"},
       {"match_angle_deg", &match_angle_deg,
        "angle turned before SLAM corrects the pose with a scan [deg]"},
       {"insert_distance_m", &insert_distance_m,
-       "distance driven before a scan is added to the map [m]"},
+       "distance driven (or insert_angle_deg turned) before a scan's points join SLAM's map [m]"},
       {"insert_angle_deg", &insert_angle_deg,
        "angle turned before a scan is added to the map [deg]"},
       {"particles", &particles, "rbpf: number of particles"},
-      {"diverged_ate_m", &diverged_ate_m, "position RMSE above which a run is marked diverged [m]"},
+      {"diverged_ate_m", &diverged_ate_m,
+       "position RMSE against the truth above which a run is marked diverged and does not count as "
+       "a success [m]"},
   };
 }
 

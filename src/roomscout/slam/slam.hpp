@@ -25,18 +25,15 @@ enum class SlamMode {
 };
 
 /// The config group "slam".
+/// Its fields are documented in parameters() and printed by `roomscout options`.
 struct SlamOptions {
-  std::string mode = "none";       ///< none | icp | rbpf
-  double match_distance_m = 0.1;   ///< the robot moves this far (or turns match_angle_deg) before
-                                   ///< SLAM corrects its pose with the next scan; in between the
-                                   ///< pose follows the odometry [m]
-  double match_angle_deg = 5.0;    ///< [deg]
-  double insert_distance_m = 0.2;  ///< the robot moves this far (or turns insert_angle_deg)
-                                   ///< before a scan's points join SLAM's map [m]
-  double insert_angle_deg = 10.0;  ///< [deg]
-  int particles = 10;              ///< rbpf: number of particles
-  double diverged_ate_m = 1.0;     ///< a run whose position RMSE against the truth exceeds this
-                                   ///< is marked diverged and does not count as a success [m]
+  std::string mode = "none";
+  double match_distance_m = 0.1;
+  double match_angle_deg = 5.0;
+  double insert_distance_m = 0.2;
+  double insert_angle_deg = 10.0;
+  int particles = 10;
+  double diverged_ate_m = 1.0;
 
   /// Throws OptionError naming the key for an unknown mode or a value out of range.
   SlamMode slamMode() const;
