@@ -10,6 +10,7 @@ different --config files (scripts/semantic_ablation.py) can be compared.
 
 Per world, a Markdown table with one row per method:
 - success: episodes whose final exploration rate is >= 98 %, of all its episodes;
+- ended: episodes the method ended by itself, before the time limit;
 - T98, L98: means over the paired episodes, the seeds on which every row reached 98 %;
 - L98 / REF: the mean over those seeds of L98 / the reference row's L98 on the same seed;
 - beats VERSUS: of the seeds both reached 98 % on, the share where the row's L98 is shorter.
@@ -92,7 +93,8 @@ def main():
     print(f"T98 and L98: means over the paired seeds, those on which every row of the world's table "
           f"reached 98 %. L98 / {args.reference}: the mean over those seeds of the row's L98 over "
           f"{args.reference}'s on the same seed. Beats {args.versus}: of the seeds both reached 98 % "
-          f"on, those where the row's L98 is shorter. Success: final rate >= 98 %.")
+          f"on, those where the row's L98 is shorter. Success: final rate >= 98 %. Ended: the method "
+          f"declared the end before the time limit.")
 
     for world in worlds:
         present = [row for row in rows if (world, row) in runs]
@@ -106,13 +108,14 @@ def main():
         print(f"\n**{world}**, paired seeds: {len(paired)} "
               f"({', '.join(map(str, paired)) or 'none'})" + (f"; ratio to {ref}" if ref != args.reference else ""))
         print()
-        head = f"| method | success | T98 (s) | L98 (m) | L98 / {ref} |" + (f" beats {versus} |" if versus else "")
+        head = f"| method | success | ended | T98 (s) | L98 (m) | L98 / {ref} |" + (f" beats {versus} |" if versus else "")
         print(head)
         print("|" + "---|" * (head.count("|") - 1))
         for row in present:
             eps = runs[(world, row)]
             ok = sum(1 for r in eps.values() if r["exploration_rate"] >= 0.98)
-            cells = [row, f"{ok}/{len(eps)}"]
+            ended = sum(1 for r in eps.values() if not r["timed_out"])
+            cells = [row, f"{ok}/{len(eps)}", f"{ended}/{len(eps)}"]
             if paired:
                 cells.append(f"{statistics.mean(eps[s]['t98_s'] for s in paired):.0f}")
                 cells.append(f"{statistics.mean(eps[s]['l98_m'] for s in paired):.1f}")
