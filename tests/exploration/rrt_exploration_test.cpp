@@ -88,7 +88,7 @@ void expectEndsOnlyWithThePocketRule() {
   EXPECT_GE(t, 4.0);  // five failing end tests, one per second
   EXPECT_LE(t, 8.0);
   Options off;
-  off.min_unknown_area_m2 = 0.0;
+  off.end_pockets.min_area_m2 = 0.0;
   Strategy original(1, off);
   EXPECT_LT(timeToDone(original, grid, 20.0), 0.0);
   // A doorway out of the room is no pocket: exploration goes on.
@@ -208,7 +208,7 @@ TEST(ImprovedRrtTest, PreviousGoalCopiesAreCountedNotStored) {
   Costmap costmap;
   costmap.update(grid);
   ImprovedRrtOptions options;
-  options.min_unknown_area_m2 = 0.0;
+  options.end_pockets.min_area_m2 = 0.0;
   ImprovedRrt rrt(3, options);
   for (double t = 0.0; t <= 20.0; t += 0.25) {
     rrt.decide(ExplorationInput{grid, costmap, Pose2(kRobot.x(), kRobot.y(), 0.0), t});

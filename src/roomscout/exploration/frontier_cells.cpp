@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <string>
 
 #include <opencv2/imgproc.hpp>
 
@@ -340,6 +341,50 @@ void markUnknownPockets(std::vector<std::uint8_t>& exhausted, const OccupancyGri
     const std::size_t fi = g.index(f);
     if (label[fi] == 0 || !large[label[fi]]) exhausted[fi] = 1;
   }
+}
+
+void EndTestPockets::validate(std::string_view group) const {
+  if (!(min_area_m2 >= 0.0) || !(min_opening_m >= 0.0)) {
+    throw OptionError(std::string(group) + ": min_unknown_area_m2 and min_opening_m must be >= 0");
+  }
+  if (!(period_s > 0.0) || !std::isfinite(period_s)) {
+    throw OptionError(std::string(group) + ".pocket_check_period_s must be > 0");
+  }
+}
+
+std::vector<ParameterRef> EndTestPockets::parameters() {
+  return {
+      {"min_unknown_area_m2", &min_area_m2,
+       "end test: frontier cells with less unknown, non-lethal area behind them (inside the known "
+       "box) are ignored [m^2]"},
+      {"min_opening_m", &min_opening_m,
+       "end test: unknown space reaching the known box's border through an opening this wide is no "
+       "pocket, whatever its area [m]; 0: the border does not matter (unsafe: a corridor's "
+       "frontier at the box's edge counts as a pocket)"},
+      {"pocket_check_period_s", &period_s,
+       "period of the end test's pocket search (a full-map scan) [s]"},
+  };
+}
+
+std::size_t countEndTestFrontierCells(const OccupancyGrid& grid, const Costmap& costmap,
+                                      int obstacle_l1_cells, std::vector<std::uint8_t>& exhausted,
+                                      const Vec2& robot_m, std::size_t enough,
+                                      const EndTestPockets& pockets, double time_s,
+                                      double& last_search_s) {
+  const auto count = [&] {
+    return countReachableFrontierCells(grid, costmap, obstacle_l1_cells, &exhausted, robot_m,
+                                       enough);
+  };
+  std::size_t cells = count();
+  if (cells >= enough && pockets.min_area_m2 > 0.0 &&
+      time_s - last_search_s >= pockets.period_s - 1e-9) {
+    last_search_s = time_s;
+    const std::vector<Cell> all =
+        reachableFrontierCells(grid, costmap, obstacle_l1_cells, &exhausted, &robot_m);
+    markUnknownPockets(exhausted, grid, costmap, all, pockets.min_area_m2, pockets.min_opening_m);
+    cells = count();
+  }
+  return cells;
 }
 
 }  // namespace roomscout

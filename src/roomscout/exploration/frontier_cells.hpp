@@ -6,9 +6,11 @@
 
 #include <cstdint>
 #include <optional>
+#include <string_view>
 #include <vector>
 
 #include "roomscout/core/occupancy_grid.hpp"
+#include "roomscout/core/parameters.hpp"
 #include "roomscout/planning/costmap.hpp"
 
 namespace roomscout {
@@ -79,5 +81,29 @@ std::optional<Vec2> nearestGoalCell(const OccupancyGrid& grid, const Costmap& co
 void markUnknownPockets(std::vector<std::uint8_t>& exhausted, const OccupancyGrid& grid,
                         const Costmap& costmap, const std::vector<Cell>& cells, double min_area_m2,
                         double min_opening_m);
+
+/// The pocket search of an end test (markUnknownPockets), as rrt, improved_rrt and
+/// semantic_paper run it. Fields are documented in parameters().
+struct EndTestPockets {
+  double min_area_m2 = 4.0;
+  double min_opening_m = 0.4;
+  double period_s = 10.0;
+
+  /// Throws OptionError naming `group` (the method) for a value out of range.
+  void validate(std::string_view group) const;
+  /// The three options, under the keys rrt and improved_rrt read them by.
+  std::vector<ParameterRef> parameters();
+};
+
+/// The reachable frontier cells an end test counts: countReachableFrontierCells(grid, costmap,
+/// obstacle_l1_cells, &exhausted, robot_m, enough). When that reaches `enough`, the search is on
+/// (pockets.min_area_m2 > 0) and the last one, at `last_search_s`, is pockets.period_s old or
+/// more, the frontier cells opening onto pockets are first marked in `exhausted`, for good
+/// (`last_search_s` becomes `time_s`), and the cells are counted again.
+std::size_t countEndTestFrontierCells(const OccupancyGrid& grid, const Costmap& costmap,
+                                      int obstacle_l1_cells, std::vector<std::uint8_t>& exhausted,
+                                      const Vec2& robot_m, std::size_t enough,
+                                      const EndTestPockets& pockets, double time_s,
+                                      double& last_search_s);
 
 }  // namespace roomscout

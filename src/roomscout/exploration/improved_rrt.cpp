@@ -35,18 +35,14 @@ void ImprovedRrtOptions::validate() const {
   if (!(observed_radius_m >= 0.0)) throw OptionError("improved_rrt.observed_radius_m must be >= 0");
   if (max_iterations_per_call < 1)
     throw OptionError("improved_rrt.max_iterations_per_call must be >= 1");
-  if (!(min_unknown_area_m2 >= 0.0) || !(min_opening_m >= 0.0)) {
-    throw OptionError("improved_rrt: min_unknown_area_m2 and min_opening_m must be >= 0");
-  }
-  if (!positive(pocket_check_period_s))
-    throw OptionError("improved_rrt.pocket_check_period_s must be > 0");
+  end_pockets.validate("improved_rrt");
   if (!(look_after_idle_s >= 0.0 && std::isfinite(look_after_idle_s))) {
     throw OptionError("improved_rrt.look_after_idle_s must be finite and >= 0");
   }
 }
 
 std::vector<ParameterRef> ImprovedRrtOptions::parameters() {
-  return {
+  std::vector<ParameterRef> parameters = {
       {"eta_m", &eta_m, "tree steering step [m]"},
       {"iterations_per_s", &iterations_per_s, "RRT iterations per simulated second"},
       {"info_radius_m", &info_radius_m, "half-side of the information gain square [m]"},
@@ -76,19 +72,13 @@ std::vector<ParameterRef> ImprovedRrtOptions::parameters() {
        "difference)"},
       {"max_iterations_per_call", &max_iterations_per_call,
        "cap on the owed iterations run in one call"},
-      {"min_unknown_area_m2", &min_unknown_area_m2,
-       "end test: frontier cells with less unknown, non-lethal area behind them (inside the known "
-       "box) are ignored [m^2]"},
-      {"min_opening_m", &min_opening_m,
-       "end test: unknown space reaching the known box's border through an opening this wide is no "
-       "pocket, whatever its area [m]; 0: the border does not matter (unsafe: a corridor's "
-       "frontier at the box's edge counts as a pocket)"},
-      {"pocket_check_period_s", &pocket_check_period_s,
-       "period of the end test's pocket search (a full-map scan) [s]"},
+  };
+  for (const ParameterRef& p : end_pockets.parameters()) parameters.push_back(p);
+  parameters.push_back(
       {"look_after_idle_s", &look_after_idle_s,
        "no frontier point for this long while the end test still counts reachable frontier cells: "
-       "drive to look at the nearest of them [s]; 0 = never (the original idles)"},
-  };
+       "drive to look at the nearest of them [s]; 0 = never (the original idles)"});
+  return parameters;
 }
 
 /// Row prefix sums of (unknown - occupied) over a grid, for SMMR-Explore's
@@ -248,21 +238,10 @@ ImprovedRrt::Step ImprovedRrt::iterate(const ExplorationInput& input,
   if (++iterations_since_end_check_ >= options_.end_check_iterations) {
     const Vec2 robot_m = input.robot.position();
     iterations_since_end_check_ = 0;
-    const auto count = [&] {
-      return countReachableFrontierCells(input.grid, input.costmap, options_.end_obstacle_l1_cells,
-                                         &visited_, robot_m,
-                                         static_cast<std::size_t>(options_.end_min_frontier_cells));
-    };
-    std::size_t cells = count();
-    if (cells >= static_cast<std::size_t>(options_.end_min_frontier_cells) &&
-        input.time_s - last_pocket_check_s_ >= options_.pocket_check_period_s - 1e-9) {
-      last_pocket_check_s_ = input.time_s;
-      const std::vector<Cell> all = reachableFrontierCells(
-          input.grid, input.costmap, options_.end_obstacle_l1_cells, &visited_, &robot_m);
-      markUnknownPockets(visited_, input.grid, input.costmap, all, options_.min_unknown_area_m2,
-                         options_.min_opening_m);
-      cells = count();
-    }
+    const std::size_t cells = countEndTestFrontierCells(
+        input.grid, input.costmap, options_.end_obstacle_l1_cells, visited_, robot_m,
+        static_cast<std::size_t>(options_.end_min_frontier_cells), options_.end_pockets,
+        input.time_s, last_pocket_check_s_);
     if (cells < static_cast<std::size_t>(options_.end_min_frontier_cells)) {
       if (++failed_end_checks_ >= options_.end_checks) return Step::kDone;
       return Step::kContinue;

@@ -66,6 +66,7 @@
 
 #include "roomscout/core/grid_remap.hpp"
 #include "roomscout/exploration/exploration_strategy.hpp"
+#include "roomscout/exploration/frontier_cells.hpp"
 #include "roomscout/exploration/rrt_tree.hpp"
 
 namespace roomscout {
@@ -90,9 +91,7 @@ struct ImprovedRrtOptions {
   double observed_radius_m = 0.75;
   bool unsigned_count_quirk = false;
   int max_iterations_per_call = 20000;
-  double min_unknown_area_m2 = 4.0;
-  double min_opening_m = 0.4;
-  double pocket_check_period_s = 10.0;
+  EndTestPockets end_pockets;
   double look_after_idle_s = 30.0;
 
   void validate() const;

@@ -29,14 +29,11 @@ void RrtExplorationOptions::validate() const {
   if (!(observed_radius_m >= 0.0)) throw OptionError("rrt.observed_radius_m must be >= 0");
   if (max_samples_per_call < 1) throw OptionError("rrt.max_samples_per_call must be >= 1");
   if (!positive(idle_end_s)) throw OptionError("rrt.idle_end_s must be > 0");
-  if (!(min_unknown_area_m2 >= 0.0) || !(min_opening_m >= 0.0)) {
-    throw OptionError("rrt: min_unknown_area_m2 and min_opening_m must be >= 0");
-  }
-  if (!positive(pocket_check_period_s)) throw OptionError("rrt.pocket_check_period_s must be > 0");
+  end_pockets.validate("rrt");
 }
 
 std::vector<ParameterRef> RrtExplorationOptions::parameters() {
-  return {
+  std::vector<ParameterRef> parameters = {
       {"global_eta_m", &global_eta_m, "global tree steering step [m]"},
       {"local_eta_m", &local_eta_m, "local tree steering step [m]"},
       {"samples_per_s", &samples_per_s, "samples per simulated second, per tree"},
@@ -63,16 +60,9 @@ std::vector<ParameterRef> RrtExplorationOptions::parameters() {
        "cap on the owed samples grown in one call, per tree"},
       {"idle_end_s", &idle_end_s,
        "exploration ends after this long with no assignable centroid [s]"},
-      {"min_unknown_area_m2", &min_unknown_area_m2,
-       "end test: frontier cells with less unknown, non-lethal area behind them (inside the known "
-       "box) are ignored [m^2]"},
-      {"min_opening_m", &min_opening_m,
-       "end test: unknown space reaching the known box's border through an opening this wide is no "
-       "pocket, whatever its area [m]; 0: the border does not matter (unsafe: a corridor's "
-       "frontier at the box's edge counts as a pocket)"},
-      {"pocket_check_period_s", &pocket_check_period_s,
-       "period of the end test's pocket search (a full-map scan) [s]"},
   };
+  for (const ParameterRef& p : end_pockets.parameters()) parameters.push_back(p);
+  return parameters;
 }
 
 namespace {
@@ -256,20 +246,10 @@ Decision RrtExploration::decide(const ExplorationInput& input) {
   const Vec2 robot_m = input.robot.position();
   if (input.time_s - last_end_check_s_ >= options_.end_check_period_s - 1e-9) {
     last_end_check_s_ = input.time_s;
-    const auto count = [&] {
-      return countReachableFrontierCells(input.grid, input.costmap, 4, &visited_, robot_m,
-                                         static_cast<std::size_t>(options_.end_min_frontier_cells));
-    };
-    std::size_t cells = count();
-    if (cells >= static_cast<std::size_t>(options_.end_min_frontier_cells) &&
-        input.time_s - last_pocket_check_s_ >= options_.pocket_check_period_s - 1e-9) {
-      last_pocket_check_s_ = input.time_s;
-      const std::vector<Cell> all =
-          reachableFrontierCells(input.grid, input.costmap, 4, &visited_, &robot_m);
-      markUnknownPockets(visited_, input.grid, input.costmap, all, options_.min_unknown_area_m2,
-                         options_.min_opening_m);
-      cells = count();
-    }
+    const std::size_t cells =
+        countEndTestFrontierCells(input.grid, input.costmap, 4, visited_, robot_m,
+                                  static_cast<std::size_t>(options_.end_min_frontier_cells),
+                                  options_.end_pockets, input.time_s, last_pocket_check_s_);
     if (cells < static_cast<std::size_t>(options_.end_min_frontier_cells)) {
       if (++failed_end_checks_ >= options_.end_checks) return Decision::done();
     } else {

@@ -62,6 +62,7 @@
 
 #include "roomscout/core/grid_remap.hpp"
 #include "roomscout/exploration/exploration_strategy.hpp"
+#include "roomscout/exploration/frontier_cells.hpp"
 #include "roomscout/exploration/rrt_tree.hpp"
 
 namespace roomscout {
@@ -85,9 +86,7 @@ struct RrtExplorationOptions {
   double observed_radius_m = 0.75;
   int max_samples_per_call = 20000;
   double idle_end_s = 30.0;
-  double min_unknown_area_m2 = 4.0;
-  double min_opening_m = 0.4;
-  double pocket_check_period_s = 10.0;
+  EndTestPockets end_pockets;
 
   void validate() const;
   std::vector<ParameterRef> parameters();

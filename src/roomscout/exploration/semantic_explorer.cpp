@@ -201,10 +201,7 @@ namespace {
 
 /// Unknown space that reaches the known map's border through an opening this wide is no
 /// pocket, whatever its area: it may go on beyond the map (improved_rrt's min_opening_m).
-constexpr double kPocketOpening_m = 0.4;
-/// The period of the end test's pocket search (end_pocket_area_m2), a scan of the whole map:
-/// improved_rrt's pocket_check_period_s.
-constexpr double kEndPocketCheckPeriod_s = 10.0;
+constexpr double kPocketOpening_m = EndTestPockets{}.min_opening_m;
 /// Geodesic C is searched on blocks of this many cells a side (0.1 m at 0.05 m cells).
 constexpr int kBlock = 2;
 
@@ -725,24 +722,15 @@ double SemanticExplorer::pocketArea_m2(const OccupancyGrid& grid) const {
 bool SemanticExplorer::endTest(const ExplorationInput& input) {
   if (input.time_s - last_end_check_s_ < options_.end_check_period_s - 1e-9) return false;
   last_end_check_s_ = input.time_s;
-  const Vec2 robot = input.robot.position();
-  const auto count = [&] {
-    return countReachableFrontierCells(input.grid, input.costmap, 4, &visited_, robot,
-                                       static_cast<std::size_t>(options_.end_min_frontier_cells));
-  };
-  std::size_t cells = count();
-  // improved_rrt's pocket search: frontier cells opening onto a pocket of unknown space are
-  // left out of the test for good, as those the robot came near are.
-  if (options_.end_pocket_area_m2 > 0.0 &&
-      cells >= static_cast<std::size_t>(options_.end_min_frontier_cells) &&
-      input.time_s - last_end_pocket_check_s_ >= kEndPocketCheckPeriod_s - 1e-9) {
-    last_end_pocket_check_s_ = input.time_s;
-    const std::vector<Cell> all =
-        reachableFrontierCells(input.grid, input.costmap, 4, &visited_, &robot);
-    markUnknownPockets(visited_, input.grid, input.costmap, all, options_.end_pocket_area_m2,
-                       kPocketOpening_m);
-    cells = count();
-  }
+  // improved_rrt's pocket search (its opening and period), when end_pocket_area_m2 is on:
+  // frontier cells opening onto a pocket are left out of the test for good, as those the robot
+  // came near are.
+  EndTestPockets pockets;
+  pockets.min_area_m2 = options_.end_pocket_area_m2;
+  const std::size_t cells =
+      countEndTestFrontierCells(input.grid, input.costmap, 4, visited_, input.robot.position(),
+                                static_cast<std::size_t>(options_.end_min_frontier_cells), pockets,
+                                input.time_s, last_end_pocket_check_s_);
   if (cells < static_cast<std::size_t>(options_.end_min_frontier_cells)) {
     return ++failed_end_checks_ >= options_.end_checks;
   }
