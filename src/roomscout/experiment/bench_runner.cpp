@@ -115,6 +115,7 @@ BenchSummary runBench(const BenchOptions& options,
       planEpisodes(names, options.methods, options.seeds, options.shard);
 
   io::ensureWritableDirectory(options.out);
+  io::removeStaleTempFiles(options.out);  // left by a killed bench
   ResultsFile results(options.out / "results.jsonl");
   // Episodes from the worlds' starts and from random ones are different experiments that
   // share keys: one results file holds one kind.
@@ -185,7 +186,9 @@ BenchSummary runBench(const BenchOptions& options,
         const std::shared_ptr<const sim::WorldModel> model =
             slot.acquire(setup.config.world, options.random_starts, key.seed);
         acquired = true;
-        if (!keep_outputs) fs::remove_all(dir);
+        // The folder of an episode not recorded yet holds at most what a killed bench left
+        // of it (files of an unfinished episode, temporary files): start afresh.
+        fs::remove_all(dir);
         const RecordedEpisode episode = runRecordedEpisode(*model, setup, options.settings, dir);
         slot.release();
         acquired = false;
