@@ -2,6 +2,8 @@
 
 #include <sys/resource.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <csignal>
 #include <filesystem>
@@ -158,6 +160,36 @@ TEST(EnsureWritableDirectory, RejectsUnwritableDirectory) {
   if (!std::filesystem::is_directory("/proc")) GTEST_SKIP() << "no /proc";
   EXPECT_TRUE(Contains(inputErrorOf([] { ensureWritableDirectory("/proc"); }),
                        "/proc: directory is not writable"));
+}
+
+/// The PID of a process that has ended: a child that exits at once, reaped.
+long deadPid() {
+  const pid_t pid = ::fork();
+  if (pid == 0) ::_exit(0);
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  return pid;
+}
+
+TEST(RemoveStaleTempFiles, RemovesOnlyTemporaryFilesOfEndedProcesses) {
+  const TempDir dir;
+  const std::string dead = std::to_string(deadPid());
+  const std::string alive = std::to_string(::getpid());
+  dir.write(".metrics.json.tmp." + dead + ".3.123456", "half");  // a killed writer's
+  dir.write(".roomscout_probe." + dead + ".0.42", "");           // a killed probe's
+  dir.write(".table1.md.tmp." + alive + ".1.7", "in progress");  // a running writer's
+  dir.write("metrics.json.tmp." + dead + ".3.1", "x");           // not hidden: not ours
+  dir.write(".notes.tmp." + dead + ".x.1", "x");                 // not three numbers
+  dir.write(".notes.tmp." + dead + ".1", "x");
+  dir.write("metrics.json", "{}");
+  std::filesystem::create_directories(dir / ("sub") / "deeper");
+  dir.write("sub/.a.tmp." + dead + ".1.2", "below: left alone");
+  EXPECT_EQ(removeStaleTempFiles(dir.path()), 2u);
+  EXPECT_EQ(dir.entries(), (Names{".notes.tmp." + dead + ".1", ".notes.tmp." + dead + ".x.1",
+                                  ".table1.md.tmp." + alive + ".1.7", "metrics.json",
+                                  "metrics.json.tmp." + dead + ".3.1", "sub"}));
+  EXPECT_TRUE(std::filesystem::exists(dir / ("sub/.a.tmp." + dead + ".1.2")));
+  EXPECT_EQ(removeStaleTempFiles(dir / "missing"), 0u);
 }
 
 TEST(ReadFile, ReportsMissingFileAndDirectory) {

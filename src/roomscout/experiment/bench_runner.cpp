@@ -115,6 +115,9 @@ BenchSummary runBench(const BenchOptions& options,
       planEpisodes(names, options.methods, options.seeds, options.shard);
 
   io::ensureWritableDirectory(options.out);
+  io::removeStaleTempFiles(options.out);  // left by a killed bench
+  std::error_code exists_ec;
+  const bool results_existed = fs::exists(options.out / "results.jsonl", exists_ec);
   ResultsFile results(options.out / "results.jsonl");
   // Episodes from the worlds' starts and from random ones are different experiments that
   // share keys: one results file holds one kind.
@@ -185,7 +188,9 @@ BenchSummary runBench(const BenchOptions& options,
         const std::shared_ptr<const sim::WorldModel> model =
             slot.acquire(setup.config.world, options.random_starts, key.seed);
         acquired = true;
-        if (!keep_outputs) fs::remove_all(dir);
+        // The folder of an episode not recorded yet holds at most what a killed bench left
+        // of it (files of an unfinished episode, temporary files): start afresh.
+        fs::remove_all(dir);
         const RecordedEpisode episode = runRecordedEpisode(*model, setup, options.settings, dir);
         slot.release();
         acquired = false;
@@ -252,7 +257,15 @@ BenchSummary runBench(const BenchOptions& options,
     threads.clear();  // joins
   }
   removeEmptyFolders(scratch_root);
-  if (first_error) std::rethrow_exception(first_error);
+  if (first_error) {
+    // A bench that fails (a world too large, say) leaves no empty results file or runs/
+    // folders of its own behind, so the command's output directory goes if it made it.
+    removeEmptyFolders(options.out / "runs");
+    std::error_code ec;
+    if (!results_existed && progress.done == 0 && fs::file_size(results.path(), ec) == 0 && !ec)
+      fs::remove(results.path(), ec);
+    std::rethrow_exception(first_error);
+  }
   summary.progress = progress;
   return summary;
 }

@@ -1,6 +1,7 @@
 #include "roomscout/experiment/report_writer.hpp"
 
 #include "roomscout/experiment/oracle_references.hpp"
+#include "roomscout/io/atomic_file.hpp"
 
 namespace roomscout::experiment {
 namespace fs = std::filesystem;
@@ -88,6 +89,9 @@ plots::HtmlPage reportPage(const Report& report, const std::vector<ReportFigure>
 ReportOutput runReport(const std::vector<fs::path>& inputs, const fs::path& out,
                        const ReportSettings& settings) {
   ResultSet results = loadResults(inputs);
+  // Temporary files of a report (or bench) killed while writing; the report rewrites all.
+  io::removeStaleTempFiles(out);
+  io::removeStaleTempFiles(out / "figures");
   ReportOutput output;
   output.episodes = results.episodes.size();
   output.duplicates = results.duplicates;

@@ -1,12 +1,15 @@
 #include "roomscout/io/atomic_file.hpp"
 
 #include <fcntl.h>
+#include <signal.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cerrno>
 #include <cstring>
+#include <limits>
 #include <random>
 #include <system_error>
 #include <vector>
@@ -48,6 +51,40 @@ int createTempFile(const std::filesystem::path& path, std::filesystem::path& tem
     if (fd >= 0 || errno != EEXIST) return fd;
   }
   return -1;
+}
+
+/// The PID in a temporary file name made by createTempFile or the directory probe, or -1 when
+/// `name` is not one: ".NAME.tmp.PID.N.R" or ".roomscout_probe.PID.N.R".
+long tempFileOwner(const std::string& name) {
+  if (name.empty() || name[0] != '.') return -1;
+  std::size_t suffix = 0;
+  if (name.rfind(".roomscout_probe.", 0) == 0) {
+    suffix = std::string(".roomscout_probe.").size();
+  } else {
+    const std::size_t tmp = name.rfind(".tmp.");
+    if (tmp == std::string::npos || tmp == 0) return -1;
+    suffix = tmp + 5;
+  }
+  // Exactly three dot-separated runs of digits: PID, counter, random number.
+  long pid = -1;
+  int parts = 0;
+  std::size_t begin = suffix;
+  while (begin <= name.size()) {
+    const std::size_t end = std::min(name.find('.', begin), name.size());
+    if (end == begin || end - begin > 18) return -1;
+    for (std::size_t i = begin; i < end; ++i) {
+      if (name[i] < '0' || name[i] > '9') return -1;
+    }
+    if (parts == 0) pid = std::stol(name.substr(begin, end - begin));
+    ++parts;
+    begin = end + 1;
+  }
+  return parts == 3 ? pid : -1;
+}
+
+bool processRuns(long pid) {
+  if (pid <= 0 || pid > std::numeric_limits<pid_t>::max()) return false;
+  return ::kill(static_cast<pid_t>(pid), 0) == 0 || errno == EPERM;
 }
 
 bool writeAll(int fd, std::string_view bytes) {
@@ -158,6 +195,21 @@ OutputDirectory::~OutputDirectory() {
   if (!created_) return;
   std::error_code ec;
   if (std::filesystem::is_empty(directory_, ec) && !ec) std::filesystem::remove(directory_, ec);
+}
+
+std::size_t removeStaleTempFiles(const std::filesystem::path& directory) {
+  std::size_t removed = 0;
+  std::error_code ec;
+  for (auto it = std::filesystem::directory_iterator(directory, ec);
+       !ec && it != std::filesystem::directory_iterator(); it.increment(ec)) {
+    std::error_code type_ec;
+    if (!it->is_regular_file(type_ec)) continue;
+    const long pid = tempFileOwner(it->path().filename().string());
+    if (pid < 0 || processRuns(pid)) continue;
+    std::error_code remove_ec;
+    if (std::filesystem::remove(it->path(), remove_ec)) ++removed;
+  }
+  return removed;
 }
 
 std::string readFile(const std::filesystem::path& path) {

@@ -43,6 +43,13 @@ class OutputDirectory {
   bool created_ = false;
 };
 
+/// Removes, from `directory` (not below it), the temporary files that writeFileAtomic and
+/// ensureWritableDirectory leave when their process is killed before they finish (hidden
+/// ".NAME.tmp.PID.N.R" and ".roomscout_probe.PID.N.R" files whose process PID no longer
+/// runs). Files of running processes and every other file stay. Returns how many it removed;
+/// a directory that does not exist has none.
+std::size_t removeStaleTempFiles(const std::filesystem::path& directory);
+
 /// Reads a whole file. Throws InputError(path, "file not found") when it does not exist and
 /// InputError(path, "cannot read: <reason>") when it cannot be read (e.g. it is a directory).
 std::string readFile(const std::filesystem::path& path);

@@ -1,7 +1,10 @@
 #include "roomscout/io/map_server.hpp"
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdint>
+#include <fstream>
 #include <limits>
 #include <map>
 #include <set>
@@ -11,6 +14,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "roomscout/core/errors.hpp"
+#include "roomscout/core/grid_limits.hpp"
 #include "roomscout/io/atomic_file.hpp"
 #include "roomscout/io/yaml_support.hpp"
 
@@ -37,6 +41,59 @@ cv::Mat readImage(const std::filesystem::path& path) {
   if (image.depth() != CV_8U && image.depth() != CV_16U) {
     throw InputError(path.string(), "unsupported pixel type (need 8- or 16-bit channels)");
   }
+  return image;
+}
+
+/// An image's width and height read from its header alone, for PNG and PGM/PPM/PBM files
+/// (the formats of map_server maps); nullopt for other formats or an unreadable header.
+std::optional<cv::Size> headerSize(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::string head(1024, '\0');
+  in.read(head.data(), static_cast<std::streamsize>(head.size()));
+  head.resize(static_cast<std::size_t>(std::max<std::streamsize>(0, in.gcount())));
+  const auto byte = [&](std::size_t i) {
+    return static_cast<std::uint32_t>(std::uint8_t(head[i]));
+  };
+  if (head.size() >= 24 && head.compare(0, 8, "\x89PNG\r\n\x1a\n") == 0 &&
+      head.compare(12, 4, "IHDR") == 0) {
+    const auto big_endian = [&](std::size_t i) {
+      return (byte(i) << 24) | (byte(i + 1) << 16) | (byte(i + 2) << 8) | byte(i + 3);
+    };
+    const std::uint32_t w = big_endian(16), h = big_endian(20);
+    if (w > 0x7fffffffu || h > 0x7fffffffu) return std::nullopt;
+    return cv::Size(static_cast<int>(w), static_cast<int>(h));
+  }
+  if (head.size() >= 2 && head[0] == 'P' && head[1] >= '1' && head[1] <= '6') {
+    // PNM: magic, then width and height as decimal numbers between whitespace and comments.
+    std::size_t i = 2;
+    long long value[2] = {0, 0};
+    for (long long& v : value) {
+      while (i < head.size() && (std::isspace(std::uint8_t(head[i])) || head[i] == '#')) {
+        if (head[i] == '#') {
+          while (i < head.size() && head[i] != '\n') ++i;
+        } else {
+          ++i;
+        }
+      }
+      const std::size_t digits = i;
+      while (i < head.size() && std::isdigit(std::uint8_t(head[i])) && v < 0x7fffffff)
+        v = v * 10 + (head[i++] - '0');
+      if (i == digits || v > 0x7fffffff) return std::nullopt;
+    }
+    return cv::Size(static_cast<int>(value[0]), static_cast<int>(value[1]));
+  }
+  return std::nullopt;
+}
+
+/// Refuses a map image larger than kMaxGridCells, from its header when it has one that
+/// headerSize reads (before reading the file), else after decoding it; then reads it.
+cv::Mat readMapImage(const std::filesystem::path& yaml_path, const MapServerMetadata& m) {
+  const auto check = [&](cv::Size size) {
+    checkGridSize(yaml_path.string(), "map", size.width, size.height, m.resolution_m);
+  };
+  if (const std::optional<cv::Size> size = headerSize(m.image)) check(*size);
+  cv::Mat image = readImage(m.image);
+  check(image.size());
   return image;
 }
 
@@ -202,7 +259,7 @@ cv::Mat classifyMapImage(const cv::Mat& image, const MapServerMetadata& metadata
 sim::World loadImageWorld(const std::filesystem::path& yaml_path,
                           const std::optional<std::filesystem::path>& room_labels_png) {
   const MapServerMetadata m = loadMapServerYaml(yaml_path);
-  const cv::Mat image = readImage(m.image);
+  const cv::Mat image = readMapImage(yaml_path, m);
   const cv::Mat states = classifyMapImage(image, m);
 
   sim::ImageWorld image_world;
@@ -232,13 +289,17 @@ sim::World loadImageWorld(const std::filesystem::path& yaml_path,
   world.start_given = false;
 
   if (room_labels_png) {
+    const auto check_size = [&](cv::Size size) {
+      if (size != image.size()) {
+        throw InputError(room_labels_png->string(),
+                         "room label image is " + std::to_string(size.width) + "x" +
+                             std::to_string(size.height) + " pixels but the map image is " +
+                             std::to_string(image.cols) + "x" + std::to_string(image.rows));
+      }
+    };
+    if (const std::optional<cv::Size> size = headerSize(*room_labels_png)) check_size(*size);
     const cv::Mat labels_image = readImage(*room_labels_png);
-    if (labels_image.size() != image.size()) {
-      throw InputError(room_labels_png->string(),
-                       "room label image is " + std::to_string(labels_image.cols) + "x" +
-                           std::to_string(labels_image.rows) + " pixels but the map image is " +
-                           std::to_string(image.cols) + "x" + std::to_string(image.rows));
-    }
+    check_size(labels_image.size());
     std::vector<int> ids;
     image_world.room_labels = labels_image.depth() == CV_8U
                                   ? labelRooms<std::uint8_t>(labels_image, ids)
@@ -251,7 +312,7 @@ sim::World loadImageWorld(const std::filesystem::path& yaml_path,
 
 OccupancyGrid loadOccupancyMap(const std::filesystem::path& yaml_path) {
   const MapServerMetadata m = loadMapServerYaml(yaml_path);
-  const cv::Mat states = classifyMapImage(readImage(m.image), m);
+  const cv::Mat states = classifyMapImage(readMapImage(yaml_path, m), m);
   OccupancyGridOptions options;
   options.resolution_m = m.resolution_m;
   OccupancyGrid grid(GridGeometry(m.origin_m, m.resolution_m, states.cols, states.rows), options);

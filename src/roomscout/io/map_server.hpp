@@ -46,12 +46,14 @@ cv::Mat classifyMapImage(const cv::Mat& image, const MapServerMetadata& metadata
 /// greyscale (0 = no room, k = room k) or colour (each distinct colour other than black and
 /// white is a room, numbered 1, 2, ... in order of first appearance in a row-major scan).
 /// Throws InputError naming the file for unreadable or corrupt images, a map with no free
-/// pixel, or a label image of another size.
+/// pixel, a label image of another size, or an image of more than kMaxGridCells pixels (read
+/// from a PNG or PGM header before the image is loaded; core/grid_limits.hpp).
 sim::World loadImageWorld(const std::filesystem::path& yaml_path,
                           const std::optional<std::filesystem::path>& room_labels_png);
 
 /// Loads a map_server map as an OccupancyGrid (cell states set from the classification,
 /// geometry from resolution and origin). Map cell (x, y) is pixel (x, height - 1 - y).
+/// Refuses images larger than kMaxGridCells as loadImageWorld does.
 OccupancyGrid loadOccupancyMap(const std::filesystem::path& yaml_path);
 
 /// Writes `grid` as NAME.pgm (binary P5: 254 free, 0 occupied, 205 unknown, first row = top)

@@ -6,15 +6,18 @@
 #include <opencv2/imgproc.hpp>
 
 #include "roomscout/core/errors.hpp"
+#include "roomscout/core/grid_limits.hpp"
 
 namespace roomscout::sim {
 
 GridGeometry mapGeometryFor(const WorldModel& world, double resolution_m) {
   const GridGeometry& r = world.geometry();
-  const int width = static_cast<int>(std::ceil(r.width() * r.resolution_m() / resolution_m - 1e-9));
-  const int height =
-      static_cast<int>(std::ceil(r.height() * r.resolution_m() / resolution_m - 1e-9));
-  return GridGeometry(r.origin_m(), resolution_m, width, height);
+  const double width = std::ceil(r.width() * r.resolution_m() / resolution_m - 1e-9);
+  const double height = std::ceil(r.height() * r.resolution_m() / resolution_m - 1e-9);
+  checkGridSize(world.world().source, "explored map", width, height, resolution_m,
+                "mapping.resolution_m");
+  return GridGeometry(r.origin_m(), resolution_m, static_cast<int>(width),
+                      static_cast<int>(height));
 }
 
 ExplorationTruth::ExplorationTruth(const WorldModel& world, const GridGeometry& map_geometry,

@@ -53,6 +53,7 @@ class ExplorationRateCounter {
 };
 
 /// The map grid matching a world: same origin as the raster, covering it, at `resolution_m`.
+/// Throws InputError naming the world's source when it would have more than kMaxGridCells.
 GridGeometry mapGeometryFor(const WorldModel& world, double resolution_m);
 
 }  // namespace roomscout::sim

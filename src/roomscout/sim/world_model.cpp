@@ -8,6 +8,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "roomscout/core/errors.hpp"
+#include "roomscout/core/grid_limits.hpp"
 #include "roomscout/sim/polygon_raster.hpp"
 
 namespace roomscout::sim {
@@ -65,8 +66,12 @@ void WorldModel::rasterizeGeometry() {
   // Origin on a multiple of 0.05 m so that map grids of 0.05/0.1 m align with the raster.
   const Vec2 origin(std::floor((lo.x() - kPad_m) / 0.05) * 0.05,
                     std::floor((lo.y() - kPad_m) / 0.05) * 0.05);
-  const int width = static_cast<int>(std::ceil((hi.x() + kPad_m - origin.x()) / res));
-  const int height = static_cast<int>(std::ceil((hi.y() + kPad_m - origin.y()) / res));
+  const double width_cells = std::ceil((hi.x() + kPad_m - origin.x()) / res);
+  const double height_cells = std::ceil((hi.y() + kPad_m - origin.y()) / res);
+  checkGridSize(world_.source, "world raster", width_cells, height_cells, res,
+                "world.raster_resolution_m");
+  const int width = static_cast<int>(width_cells);
+  const int height = static_cast<int>(height_cells);
   geometry_ = GridGeometry(origin, res, width, height);
 
   cv::Mat laser = cv::Mat::zeros(height, width, CV_8U);
@@ -93,6 +98,7 @@ void WorldModel::rasterizeImage() {
   if (img.solid.empty() || img.solid.type() != CV_8U) {
     throw InputError(world_.source, "the world image is empty");
   }
+  checkGridSize(world_.source, "world image", img.solid.cols, img.solid.rows, img.resolution_m);
   geometry_ = GridGeometry(img.origin_m, img.resolution_m, img.solid.cols, img.solid.rows);
   cv::Mat solid;
   cv::flip(img.solid, solid, 0);  // image row 0 is the top; grid row 0 is the bottom

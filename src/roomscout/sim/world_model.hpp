@@ -24,8 +24,9 @@ struct WorldModelOptions {
 /// Rasterised ground truth. Immutable after construction; safe to share between threads.
 class WorldModel {
  public:
-  /// Throws InputError (naming world.source) when the world has no free space or its given
-  /// start pose is outside the world or too close to a solid object.
+  /// Throws InputError (naming world.source) when the world has no free space, its given
+  /// start pose is outside the world or too close to a solid object, or its raster would
+  /// have more than kMaxGridCells cells (checked before the raster is allocated).
   WorldModel(const World& world, const WorldModelOptions& options = {});
 
   const World& world() const { return world_; }
