@@ -31,7 +31,8 @@ std::vector<ParameterRef> NearestFrontierOptions::parameters() {
       {"potential_scale", &potential_scale,
        "weight of the distance to a frontier (explore_lite's default)"},
       {"gain_scale", &gain_scale, "weight of a frontier's size (explore_lite's default)"},
-      {"min_frontier_size_m", &min_frontier_size_m, "smallest frontier considered [m]"},
+      {"min_frontier_size_m", &min_frontier_size_m,
+       "smallest frontier considered [m] (explore_lite: 0.75; a 0.5 m corridor's end must count)"},
       {"planner_period_s", &planner_period_s,
        "seconds between re-decisions while driving (explore_lite's 1 / planner_frequency)"},
       {"progress_timeout_s", &progress_timeout_s,
@@ -62,8 +63,11 @@ namespace {
 ///   frontier itself, often under the robot, where explore_lite dithers until its progress
 ///   timeout; when the centroid is farther than `max_centroid_offset_m` from every member
 ///   cell, the traversable member nearest the robot is the goal instead.
+/// In both cases members on the blacklist are passed over, so that one failed spot does not
+/// drop a whole frontier (a ring around the robot is often a single frontier).
+template <typename Blacklisted>
 std::optional<Vec2> traversableTarget(const Frontier& f, const Costmap& costmap, const Vec2& robot,
-                                      double max_centroid_offset_m) {
+                                      double max_centroid_offset_m, Blacklisted&& blacklisted) {
   const GridGeometry& g = costmap.geometry();
   double offset2 = std::numeric_limits<double>::infinity();
   for (const Cell& m : f.cells)
@@ -77,6 +81,7 @@ std::optional<Vec2> traversableTarget(const Frontier& f, const Costmap& costmap,
   for (const Cell& m : f.cells) {
     if (costmap.isLethal(g.index(m))) continue;
     const Vec2 p = g.centerOf(m);
+    if (blacklisted(p)) continue;
     const double d = (p - reference).squaredNorm();
     if (d < best_d) {
       best_d = d;
@@ -103,7 +108,8 @@ Decision NearestFrontier::decide(const ExplorationInput& input) {
                         options_.gain_scale * static_cast<double>(f.size()) * res;
     if (cost >= best_cost) continue;
     const std::optional<Vec2> target =
-        traversableTarget(f, input.costmap, input.robot.position(), options_.max_centroid_offset_m);
+        traversableTarget(f, input.costmap, input.robot.position(), options_.max_centroid_offset_m,
+                          [&](const Vec2& p) { return onBlacklist(p); });
     if (!target || onBlacklist(*target)) continue;
     best = &f;
     best_cost = cost;

@@ -16,7 +16,7 @@ namespace roomscout {
 struct NearestFrontierOptions {
   double potential_scale = 3.0;
   double gain_scale = 1.0;
-  double min_frontier_size_m = 0.5;
+  double min_frontier_size_m = 0.3;
   double planner_period_s = 3.0;
   double progress_timeout_s = 30.0;
   double blacklist_radius_m = 0.25;

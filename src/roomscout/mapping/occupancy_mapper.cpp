@@ -42,6 +42,24 @@ void traverse(const GridGeometry& g, const Vec2& from_m, const Vec2& to_m, Miss&
   }
 }
 
+/// Whether a beam running in direction `dir` (unit) through the occupied cell `c` runs along
+/// the wall it belongs to: within 10 degrees of the line from `c` to an occupied 8-neighbour.
+bool grazesWall(const OccupancyGrid& grid, Cell c, const Vec2& dir) {
+  const GridGeometry& g = grid.geometry();
+  auto occupied = [&](int dx, int dy) {
+    const Cell n{c.x + dx, c.y + dy};
+    return g.contains(n) && grid.isOccupied(g.index(n));
+  };
+  constexpr double kSinGrazing = 0.17364817766693033;  // sin(10 degrees)
+  constexpr double kInvSqrt2 = 0.70710678118654752;
+  const double x = dir.x();
+  const double y = dir.y();
+  return (std::abs(y) < kSinGrazing && (occupied(-1, 0) || occupied(1, 0))) ||
+         (std::abs(x) < kSinGrazing && (occupied(0, -1) || occupied(0, 1))) ||
+         (std::abs(x - y) * kInvSqrt2 < kSinGrazing && (occupied(-1, -1) || occupied(1, 1))) ||
+         (std::abs(x + y) * kInvSqrt2 < kSinGrazing && (occupied(-1, 1) || occupied(1, -1)));
+}
+
 }  // namespace
 
 CellRect OccupancyMapper::integrate(const LaserScan& scan, const Pose2& T_map_sensor) {
@@ -87,12 +105,21 @@ CellRect OccupancyMapper::integrate(const LaserScan& scan, const Pose2& T_map_se
       }
     }
   }
+  Vec2 beam_dir = Vec2::Zero();
   auto miss = [&](std::size_t index) {
     if (stamp_[index] == hit_mark || stamp_[index] == miss_mark) return;
+    if (grid_.isOccupied(index) &&
+        grazesWall(grid_,
+                   {static_cast<int>(index % g.width()), static_cast<int>(index / g.width())},
+                   beam_dir))
+      return;
     stamp_[index] = miss_mark;
     grid_.addMiss(index);
   };
   for (const Beam& beam : beams) {
+    const Vec2 ray = beam.end - origin;
+    const double length = ray.norm();
+    beam_dir = length > 0.0 ? Vec2(ray / length) : Vec2::Zero();
     traverse(g, origin, beam.end, miss);
     if (!beam.hit) {
       const Cell end_cell = g.cellOf(beam.end);

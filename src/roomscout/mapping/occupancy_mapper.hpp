@@ -15,6 +15,13 @@ namespace roomscout {
 /// one scan every cell is updated at most once, a cell that any beam ends in gets a hit, and
 /// the cells beams cross, except those hit cells, get a miss. So grazing beams crossing the
 /// free part of a wall-face cell cannot outvote the beams that hit the wall in it.
+/// Across scans, a cell taken for a wall is not cleared by a beam running along that wall
+/// (within 10 degrees of the line the cell forms with an occupied neighbour): such a beam
+/// crosses the free part of the cell that holds the wall's face, and its misses would wear a
+/// wall seen at grazing angles down to free cells with unknown behind them, frontiers no
+/// robot can ever close (a 0.5 m corridor's walls, seen from along it). Beams at steeper
+/// angles clear such a cell as before: an opened door still shows, and so do free cells that
+/// pose drift (SLAM) has drawn walls on. A wider angle keeps more of those drift walls.
 /// Beams without a return clear space up to the scan's range_max_m.
 class OccupancyMapper {
  public:
