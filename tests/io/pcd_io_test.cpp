@@ -108,10 +108,11 @@ TEST(PcdFuzzRegression, CompressedBodySmallerThanTheHeaderSays) {
   const std::string crash(kCrash, sizeof(kCrash) - 1);  // with its NUL bytes
   const auto path = dir.write("crash.pcd", crash);
   EXPECT_TRUE(test::Contains(pcdErrorOf(path), path.string() + ": cannot read PCD: "));
-  // The same sizes under a well-formed header.
+  // The same sizes under a well-formed header (a fourth float field instead of COUNT 2).
   const auto tidy = dir.write("tidy.pcd",
-                              "# .PCD v0.7\nVERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\n"
-                              "COUNT 2 1 1\nWIDTH 3\nHEIGHT 1\nPOINTS 3\nDATA binary_compressed\n" +
+                              "# .PCD v0.7\nVERSION 0.7\nFIELDS x y z i\nSIZE 4 4 4 4\n"
+                              "TYPE F F F F\nCOUNT 1 1 1 1\nWIDTH 3\nHEIGHT 1\nPOINTS 3\n"
+                              "DATA binary_compressed\n" +
                                   crash.substr(crash.size() - 46));
   EXPECT_TRUE(test::Contains(pcdErrorOf(tidy),
                              tidy.string() +
@@ -137,6 +138,32 @@ TEST(PcdFuzzRegression, HeaderAnnouncingMorePointsThanTheBodyHolds) {
       "compressed.pcd", head + "DATA binary_compressed\n" + std::string("\x04\x00\x00\x00", 4) +
                             std::string("\x00\x8c\x86\x47", 4) + "abcd");
   EXPECT_TRUE(test::Contains(pcdErrorOf(compressed), "is impossible for a compressed size of 4"));
+}
+
+// Crashed the pcd fuzz target (heap-buffer-overflow in pcl::fromPCLPointCloud2): x y z of one
+// byte each (and no TYPE line); PCL copies 4 bytes per coordinate out of 3-byte points.
+TEST(PcdFuzzRegression, CoordinatesThatAreNotFloats) {
+  test::TempDir dir;
+  const std::string body(
+      "\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x80\x3f\x00\x00\x00\x40\x00\x00"
+      "\x00\x3f\x00\x00\xc0\xbf\x00\x00\x80\x3e\x00\x00\x00\x40",
+      36);
+  const auto crash = dir.write("crash.pcd",
+                               "# .PCD v0.7 - Point Clo!file format\nVERSION 0.7\nFIELDS y x z\n"
+                               "SIZE  1 1 1\nWIDTH 3\nHEIGHT 1\nVIEWPOINTEWPOINT 0 0 0 1 0 0 0\n"
+                               "POINTS 3\nDATA binary\n" +
+                                   body);
+  EXPECT_TRUE(test::Contains(pcdErrorOf(crash),
+                             crash.string() + ": cannot read PCD: FIELDS, SIZE, TYPE and COUNT do "
+                                              "not have the same number of entries"));
+  const auto bytes = dir.write("bytes.pcd",
+                               "# .PCD v0.7\nVERSION 0.7\nFIELDS y x z\nSIZE 1 1 1\n"
+                               "TYPE F F F\nWIDTH 3\nHEIGHT 1\nPOINTS 3\nDATA binary\n" +
+                                   body);
+  EXPECT_TRUE(test::Contains(pcdErrorOf(bytes),
+                             bytes.string() +
+                                 ": cannot read PCD: field y is not a float (SIZE 4, TYPE F, "
+                                 "COUNT 1)"));
 }
 
 /// A small furnished world: two rooms joined by a door with a lintel, a table and a cupboard.

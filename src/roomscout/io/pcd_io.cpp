@@ -135,7 +135,7 @@ void checkPcdHeader(const std::filesystem::path& path) {
     return value;
   };
   std::vector<std::uint64_t> sizes, counts;
-  std::size_t fields = 0;
+  std::vector<std::string> names, types;
   std::optional<std::uint64_t> points, width, height;
   std::string data;
   std::string line;
@@ -148,7 +148,9 @@ void checkPcdHeader(const std::filesystem::path& path) {
     std::vector<std::string> values;
     for (std::string v; words >> v;) values.push_back(v);
     if (key == "FIELDS" || key == "COLUMNS") {
-      fields = values.size();
+      names = values;
+    } else if (key == "TYPE") {
+      types = values;
     } else if (key == "SIZE") {
       sizes.clear();
       for (const std::string& v : values) sizes.push_back(number(v, key));
@@ -164,9 +166,17 @@ void checkPcdHeader(const std::filesystem::path& path) {
     }
   }
   if (data.empty()) fail("no DATA line");
-  if (fields == 0 || sizes.size() != fields || (!counts.empty() && counts.size() != fields))
-    fail("FIELDS, SIZE and COUNT do not have the same number of entries");
+  const std::size_t fields = names.size();
+  if (fields == 0 || sizes.size() != fields || types.size() != fields ||
+      (!counts.empty() && counts.size() != fields))
+    fail("FIELDS, SIZE, TYPE and COUNT do not have the same number of entries");
   if (counts.empty()) counts.assign(fields, 1);
+  // PCL copies 4 bytes for each of x, y and z whatever the header says.
+  for (std::size_t i = 0; i < fields; ++i) {
+    if ((names[i] == "x" || names[i] == "y" || names[i] == "z") &&
+        (sizes[i] != 4 || types[i] != "F" || counts[i] != 1))
+      fail("field " + names[i] + " is not a float (SIZE 4, TYPE F, COUNT 1)");
+  }
   std::uint64_t point_bytes = 0, values_per_point = 0;
   for (std::size_t i = 0; i < fields; ++i) {
     if (sizes[i] != 1 && sizes[i] != 2 && sizes[i] != 4 && sizes[i] != 8)
