@@ -10,6 +10,9 @@ packages=(
   libeigen3-dev libopencv-dev libopencv-contrib-dev libpcl-dev libmrpt-slam-dev
   libyaml-cpp-dev nlohmann-json3-dev libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev clang-format
+  # clang with its sanitizer and libFuzzer runtimes (only recommended by clang, so named) for
+  # scripts/sanitize.sh and scripts/fuzz.sh
+  clang libclang-rt-14-dev
   # ROS 1, for the nodes in ros/ and their tests (label "ros")
   libroscpp-dev libtf2-ros-dev libactionlib-dev libnav-msgs-dev libmove-base-msgs-dev
   libvisualization-msgs-dev libsensor-msgs-dev libstd-srvs-dev python3-rosmaster catkin

@@ -71,7 +71,7 @@ double timeToDone(ExplorationStrategy& strategy, const OccupancyGrid& grid, doub
   Costmap costmap;
   costmap.update(grid);
   for (double t = 0.0; t <= limit_s; t += 0.25) {
-    const ExplorationInput input{grid, costmap, Pose2(kRobot.x(), kRobot.y(), 0.0), t};
+    const ExplorationInput input{grid, costmap, Pose2{kRobot.x(), kRobot.y(), 0.0}, t};
     if (strategy.decide(input).status == Decision::Status::kDone) return t;
   }
   return -1.0;
@@ -120,7 +120,7 @@ TEST(ImprovedRrtTest, FindsTheOpenEndOfACorridorOnTheEdgeOfTheKnownBox) {
   ImprovedRrt strategy(1);
   Decision last;
   for (double t = 0.0; t <= 60.0; t += 0.25) {
-    last = strategy.decide(ExplorationInput{grid, costmap, Pose2(9.0, 1.5, 0.0), t});
+    last = strategy.decide(ExplorationInput{grid, costmap, Pose2{9.0, 1.5, 0.0}, t});
   }
   ASSERT_EQ(last.status, Decision::Status::kGoal);
   EXPECT_LT(last.goal_m.x(), 2.5) << "goal (" << last.goal_m.x() << ", " << last.goal_m.y() << ")";
@@ -164,7 +164,7 @@ TEST(ImprovedRrtTest, AfterIdlingDrivesToLookAtTheCellsTheEndTestStillCounts) {
     ImprovedRrtOptions options = starved;
     options.look_after_idle_s = look_after_s;
     ImprovedRrt strategy(1, options);
-    Pose2 robot(start.x(), start.y(), 0.0);
+    Pose2 robot{start.x(), start.y(), 0.0};
     for (double t = 0.0; t < 29.9; t += 0.25) {
       const Decision d = strategy.decide(ExplorationInput{grid, costmap, robot, t});
       ASSERT_EQ(d.status, Decision::Status::kGoal);
@@ -181,7 +181,7 @@ TEST(ImprovedRrtTest, AfterIdlingDrivesToLookAtTheCellsTheEndTestStillCounts) {
     EXPECT_EQ(strategy.decide(ExplorationInput{grid, costmap, robot, 30.25}).goal_m, look.goal_m);
     // There: the cells within observed_radius_m count as looked at; the next goal is at the
     // other corner.
-    robot = Pose2(look.goal_m.x(), look.goal_m.y(), 0.0);
+    robot = Pose2{look.goal_m.x(), look.goal_m.y(), 0.0};
     strategy.onGoalReached(look.goal_m);
     const Decision next = strategy.decide(ExplorationInput{grid, costmap, robot, 31.0});
     ASSERT_EQ(next.status, Decision::Status::kGoal);
@@ -190,7 +190,7 @@ TEST(ImprovedRrtTest, AfterIdlingDrivesToLookAtTheCellsTheEndTestStillCounts) {
     EXPECT_GT(look.goal_m.y(), 2.0);
     EXPECT_LT(next.goal_m.y(), 1.0);
     // Both corners looked at: nothing is left, the robot waits (the end test passes now).
-    robot = Pose2(next.goal_m.x(), next.goal_m.y(), 0.0);
+    robot = Pose2{next.goal_m.x(), next.goal_m.y(), 0.0};
     strategy.onGoalReached(next.goal_m);
     const Decision after = strategy.decide(ExplorationInput{grid, costmap, robot, 32.0});
     ASSERT_EQ(after.status, Decision::Status::kGoal);
@@ -211,7 +211,7 @@ TEST(ImprovedRrtTest, PreviousGoalCopiesAreCountedNotStored) {
   options.end_pockets.min_area_m2 = 0.0;
   ImprovedRrt rrt(3, options);
   for (double t = 0.0; t <= 20.0; t += 0.25) {
-    rrt.decide(ExplorationInput{grid, costmap, Pose2(kRobot.x(), kRobot.y(), 0.0), t});
+    rrt.decide(ExplorationInput{grid, costmap, Pose2{kRobot.x(), kRobot.y(), 0.0}, t});
   }
   // 2000 iterations: the copies make up most of the count, the distinct points stay few.
   EXPECT_GT(rrt.frontierCount(), 1000u);
@@ -233,7 +233,7 @@ TEST(ImprovedRrtTest, RescoresPointsWhoseSquareChanged) {
   Costmap costmap;
   costmap.update(grid);
   ImprovedRrt rrt(7);
-  const Pose2 robot(7.5, 1.5, 0.0);
+  const Pose2 robot{7.5, 1.5, 0.0};
   Decision d;
   double t = 0.0;
   for (; t <= 20.0; t += 0.25) d = rrt.decide(ExplorationInput{grid, costmap, robot, t});

@@ -171,15 +171,18 @@ TEST(SemanticExplorerTest, KeepsItsGoalUntilTheGoalsSquareIsExplored) {
 
   // The goal's own cell and its neighbours are seen; the square around it still holds
   // unknown space, so the goal stands.
+  // Plain variables for the lambda: clang 14 cannot capture structured bindings.
+  auto& world = w;
+  const Vec2 first_goal = first.goal_m;
   auto reveal = [&](double half_m) {
-    const Cell c = g.cellOf(first.goal_m);
+    const Cell c = g.cellOf(first_goal);
     const int r = static_cast<int>(std::lround(half_m / g.resolution_m()));
     for (int y = c.y - r; y <= c.y + r; ++y) {
       for (int x = c.x - r; x <= c.x + r; ++x) {
-        if (g.contains(Cell{x, y})) w.grid.setState(g.index(Cell{x, y}), CellState::kFree);
+        if (g.contains(Cell{x, y})) world.grid.setState(g.index(Cell{x, y}), CellState::kFree);
       }
     }
-    w.costmap.update(w.grid);
+    world.costmap.update(world.grid);
   };
   reveal(0.1);
   const Decision kept = s.decide({w.grid, w.costmap, robot, 2.5, &w.semantic});

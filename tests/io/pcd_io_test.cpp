@@ -86,6 +86,86 @@ TEST(PcdIo, EmptyCloudAndErrors) {
   EXPECT_THROW(parsePcdFormat("ply"), OptionError);
 }
 
+std::string pcdErrorOf(const std::filesystem::path& path) {
+  return test::messageOf<InputError>([&] { readPcd(path); });
+}
+
+const std::string kXyzHead =
+    "# .PCD v0.7\nVERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\n";
+
+// Crashed the pcd fuzz target (heap-buffer-overflow in PCL's readBodyBinary): a
+// binary_compressed body whose uncompressed size (36 bytes) is less than the header's points
+// need (COUNT 2 for x: 3 points of 16 bytes). PCL read past its buffer.
+TEST(PcdFuzzRegression, CompressedBodySmallerThanTheHeaderSays) {
+  test::TempDir dir;
+  static constexpr char kCrash[] =
+      "# .PCD ION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 2 1 1\nWIDTH 3\nHEIGHT 1\n"
+      "VIEWPOINT 0 0 0 1 0 0 0\nPOINTS 3\nDATA binarWPOINT 0 0 0 1 0 0 0\nPOINTS 3\n"
+      "DATA binary_compressed\n"
+      "\x26\x00\x00\x00\x24\x00\x00\x00\x1f\x00\x00\x00\x00\x00\x00\x80\x3f\x00\x00\xc0\xbf\x00"
+      "\x00\x00\x00\x00\x00\x00\x40\x00\x00\x80\x3e\x00\x00\x00\x00\x00\x00\x00\x3f\x03\x00\x00"
+      "\x00\x40";
+  const std::string crash(kCrash, sizeof(kCrash) - 1);  // with its NUL bytes
+  const auto path = dir.write("crash.pcd", crash);
+  EXPECT_TRUE(test::Contains(pcdErrorOf(path), path.string() + ": cannot read PCD: "));
+  // The same sizes under a well-formed header (a fourth float field instead of COUNT 2).
+  const auto tidy = dir.write("tidy.pcd",
+                              "# .PCD v0.7\nVERSION 0.7\nFIELDS x y z i\nSIZE 4 4 4 4\n"
+                              "TYPE F F F F\nCOUNT 1 1 1 1\nWIDTH 3\nHEIGHT 1\nPOINTS 3\n"
+                              "DATA binary_compressed\n" +
+                                  crash.substr(crash.size() - 46));
+  EXPECT_TRUE(test::Contains(pcdErrorOf(tidy),
+                             tidy.string() +
+                                 ": cannot read PCD: the header announces 3 points of 16 bytes "
+                                 "but the uncompressed size is 36 bytes"));
+}
+
+// Crashed the pcd fuzz target (out of memory): PCL allocates POINTS x point size from the
+// header before reading the body, 1.2 GB for these 12-byte files.
+TEST(PcdFuzzRegression, HeaderAnnouncingMorePointsThanTheBodyHolds) {
+  test::TempDir dir;
+  const std::string head = kXyzHead + "WIDTH 100000000\nHEIGHT 1\nPOINTS 100000000\n";
+  const auto ascii = dir.write("ascii.pcd", head + "DATA ascii\n1 2 3\n");
+  EXPECT_TRUE(test::Contains(pcdErrorOf(ascii),
+                             ascii.string() +
+                                 ": cannot read PCD: the header announces 100000000 points of "
+                                 "12 bytes but the ASCII body has only 6 bytes"));
+  const auto binary = dir.write("binary.pcd", head + "DATA binary\n123456789012");
+  EXPECT_TRUE(test::Contains(pcdErrorOf(binary), "but the binary body has only 12 bytes"));
+  const auto header_only = dir.write("header_only.pcd", head + "DATA ascii");
+  EXPECT_TRUE(test::Contains(pcdErrorOf(header_only), "but the ASCII body has only 0 bytes"));
+  const auto compressed = dir.write(
+      "compressed.pcd", head + "DATA binary_compressed\n" + std::string("\x04\x00\x00\x00", 4) +
+                            std::string("\x00\x8c\x86\x47", 4) + "abcd");
+  EXPECT_TRUE(test::Contains(pcdErrorOf(compressed), "is impossible for a compressed size of 4"));
+}
+
+// Crashed the pcd fuzz target (heap-buffer-overflow in pcl::fromPCLPointCloud2): x y z of one
+// byte each (and no TYPE line); PCL copies 4 bytes per coordinate out of 3-byte points.
+TEST(PcdFuzzRegression, CoordinatesThatAreNotFloats) {
+  test::TempDir dir;
+  const std::string body(
+      "\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x80\x3f\x00\x00\x00\x40\x00\x00"
+      "\x00\x3f\x00\x00\xc0\xbf\x00\x00\x80\x3e\x00\x00\x00\x40",
+      36);
+  const auto crash = dir.write("crash.pcd",
+                               "# .PCD v0.7 - Point Clo!file format\nVERSION 0.7\nFIELDS y x z\n"
+                               "SIZE  1 1 1\nWIDTH 3\nHEIGHT 1\nVIEWPOINTEWPOINT 0 0 0 1 0 0 0\n"
+                               "POINTS 3\nDATA binary\n" +
+                                   body);
+  EXPECT_TRUE(test::Contains(pcdErrorOf(crash),
+                             crash.string() + ": cannot read PCD: FIELDS, SIZE, TYPE and COUNT do "
+                                              "not have the same number of entries"));
+  const auto bytes = dir.write("bytes.pcd",
+                               "# .PCD v0.7\nVERSION 0.7\nFIELDS y x z\nSIZE 1 1 1\n"
+                               "TYPE F F F\nWIDTH 3\nHEIGHT 1\nPOINTS 3\nDATA binary\n" +
+                                   body);
+  EXPECT_TRUE(test::Contains(pcdErrorOf(bytes),
+                             bytes.string() +
+                                 ": cannot read PCD: field y is not a float (SIZE 4, TYPE F, "
+                                 "COUNT 1)"));
+}
+
 /// A small furnished world: two rooms joined by a door with a lintel, a table and a cupboard.
 sim::World smallWorld() {
   sim::World w;

@@ -16,6 +16,7 @@
 #include "roomscout/core/errors.hpp"
 #include "roomscout/core/grid_limits.hpp"
 #include "roomscout/io/atomic_file.hpp"
+#include "roomscout/io/image_file.hpp"
 #include "roomscout/io/yaml_support.hpp"
 
 namespace roomscout::io {
@@ -27,19 +28,13 @@ constexpr std::uint8_t kPgmUnknown = 205;
 
 /// Reads and decodes an image file unchanged (bit depth and channels as stored).
 cv::Mat readImage(const std::filesystem::path& path) {
-  const std::string bytes = readFile(path);
-  cv::Mat image;
-  try {
-    const cv::Mat buffer(1, static_cast<int>(bytes.size()), CV_8U, const_cast<char*>(bytes.data()));
-    if (!bytes.empty()) image = cv::imdecode(buffer, cv::IMREAD_UNCHANGED);
-  } catch (const cv::Exception&) {
-    image.release();
-  }
-  if (image.empty()) {
-    throw InputError(path.string(), "cannot decode image (corrupt or unsupported format)");
-  }
+  cv::Mat image = readImageFile(path, cv::IMREAD_UNCHANGED);
   if (image.depth() != CV_8U && image.depth() != CV_16U) {
     throw InputError(path.string(), "unsupported pixel type (need 8- or 16-bit channels)");
+  }
+  if (image.channels() > 4) {
+    throw InputError(path.string(), "unsupported image: " + std::to_string(image.channels()) +
+                                        " channels (need 1 to 4)");
   }
   return image;
 }

@@ -76,13 +76,15 @@ void applyParameters(const YAML::Node& node, std::vector<ParameterRef> params,
     if (!seen.insert(key).second) throw OptionError(place(key) + ": given twice");
     pending.emplace_back(param, convert(*param, entry.second, place(key)));
   }
-  for (const auto& [param, value] : pending) {
+  // A pair, not a structured binding: clang 14 (the fuzz and sanitizer build) cannot capture
+  // structured bindings in a lambda.
+  for (const auto& entry : pending) {
     std::visit(
         [&](auto* storage) {
           using T = std::remove_pointer_t<decltype(storage)>;
-          *storage = std::get<T>(value);
+          *storage = std::get<T>(entry.second);
         },
-        param->value);
+        entry.first->value);
   }
 }
 

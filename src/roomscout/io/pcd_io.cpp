@@ -4,7 +4,14 @@
 
 #include <algorithm>
 #include <atomic>
+#include <charconv>
+#include <cstdint>
+#include <fstream>
+#include <optional>
+#include <sstream>
+#include <string>
 #include <tuple>
+#include <vector>
 
 #include <pcl/io/pcd_io.h>
 #include <pcl/point_types.h>
@@ -105,8 +112,128 @@ void writePcdAtomic(const std::filesystem::path& path,
   writeFileAtomic(path, bytes);
 }
 
+namespace {
+
+/// Checks that a PCD file's header is consistent and that the body can hold the points it
+/// announces, before PCL sees the file: PCL's reader allocates POINTS x point size from the
+/// header alone, and reads a binary_compressed body past its buffer when the sizes disagree.
+/// Throws InputError(path, "cannot read PCD: ...").
+void checkPcdHeader(const std::filesystem::path& path) {
+  const auto fail = [&](const std::string& problem) -> void {
+    throw InputError(path.string(), "cannot read PCD: " + problem);
+  };
+  std::ifstream in(path, std::ios::binary);
+  if (!in) fail("cannot open the file");
+  std::error_code ec;
+  const std::uint64_t file_size = std::filesystem::file_size(path, ec);
+  if (ec) fail("cannot read the file size");
+  const auto number = [&](const std::string& token, const std::string& key) {
+    std::uint64_t value = 0;
+    const auto r = std::from_chars(token.data(), token.data() + token.size(), value);
+    if (r.ec != std::errc() || r.ptr != token.data() + token.size() || value > (1ULL << 40))
+      fail(key + ": expected a non-negative integer, got '" + token + "'");
+    return value;
+  };
+  std::vector<std::uint64_t> sizes, counts;
+  std::vector<std::string> names, types;
+  std::optional<std::uint64_t> points, width, height;
+  std::string data;
+  std::string line;
+  // The header: one keyword per line, up to and including DATA; PCL reads at most this much.
+  for (int lines = 0; data.empty() && std::getline(in, line); ++lines) {
+    if (lines > 1000) fail("no DATA line in the first 1000 lines");
+    std::istringstream words(line);
+    std::string key;
+    if (!(words >> key) || key[0] == '#') continue;
+    std::vector<std::string> values;
+    for (std::string v; words >> v;) values.push_back(v);
+    if (key == "FIELDS" || key == "COLUMNS") {
+      names = values;
+    } else if (key == "TYPE") {
+      types = values;
+    } else if (key == "SIZE") {
+      sizes.clear();
+      for (const std::string& v : values) sizes.push_back(number(v, key));
+    } else if (key == "COUNT") {
+      counts.clear();
+      for (const std::string& v : values) counts.push_back(number(v, key));
+    } else if (key == "POINTS" || key == "WIDTH" || key == "HEIGHT") {
+      if (values.size() != 1) fail(key + ": expected one number");
+      const std::uint64_t value = number(values[0], key);
+      (key == "POINTS" ? points : key == "WIDTH" ? width : height) = value;
+    } else if (key == "DATA") {
+      data = values.empty() ? std::string("?") : values[0];
+    }
+  }
+  if (data.empty()) fail("no DATA line");
+  const std::size_t fields = names.size();
+  if (fields == 0 || sizes.size() != fields || types.size() != fields ||
+      (!counts.empty() && counts.size() != fields))
+    fail("FIELDS, SIZE, TYPE and COUNT do not have the same number of entries");
+  if (counts.empty()) counts.assign(fields, 1);
+  // PCL copies 4 bytes for each of x, y and z whatever the header says.
+  for (std::size_t i = 0; i < fields; ++i) {
+    if ((names[i] == "x" || names[i] == "y" || names[i] == "z") &&
+        (sizes[i] != 4 || types[i] != "F" || counts[i] != 1))
+      fail("field " + names[i] + " is not a float (SIZE 4, TYPE F, COUNT 1)");
+  }
+  std::uint64_t point_bytes = 0, values_per_point = 0;
+  for (std::size_t i = 0; i < fields; ++i) {
+    if (sizes[i] != 1 && sizes[i] != 2 && sizes[i] != 4 && sizes[i] != 8)
+      fail("SIZE: " + std::to_string(sizes[i]) + " is not 1, 2, 4 or 8");
+    if (counts[i] == 0 || counts[i] > (1U << 20))
+      fail("COUNT: " + std::to_string(counts[i]) + " is not 1 to 2^20");
+    point_bytes += sizes[i] * counts[i];
+    values_per_point += counts[i];
+  }
+  const std::uint64_t n =
+      points ? *points : (width && height && *width <= (1U << 31) ? *width * *height : 0);
+  if (width && height && *width <= (1U << 31) && *height <= (1U << 31) && *width * *height != n)
+    fail("WIDTH x HEIGHT is not POINTS");
+  // The DATA line may end the file without a newline: then the body is empty.
+  const std::streamoff body_start = in.tellg();
+  const std::uint64_t body =
+      body_start < 0 ? 0 : file_size - std::min(file_size, static_cast<std::uint64_t>(body_start));
+  const std::string announced =
+      std::to_string(n) + " points of " + std::to_string(point_bytes) + " bytes";
+  if (data == "ascii") {
+    // A value is at least one character and a separator.
+    if (n > (body + 1) / (2 * values_per_point))
+      fail("the header announces " + announced + " but the ASCII body has only " +
+           std::to_string(body) + " bytes");
+  } else if (data == "binary") {
+    if (n > body / point_bytes)
+      fail("the header announces " + announced + " but the binary body has only " +
+           std::to_string(body) + " bytes");
+  } else if (data == "binary_compressed") {
+    if (n == 0) return;
+    unsigned char sizes_le[8];
+    if (body < 8 || !in.read(reinterpret_cast<char*>(sizes_le), 8))
+      fail("binary_compressed body shorter than its 8-byte size header");
+    const auto le32 = [&](int at) {
+      return std::uint64_t{sizes_le[at]} | (std::uint64_t{sizes_le[at + 1]} << 8) |
+             (std::uint64_t{sizes_le[at + 2]} << 16) | (std::uint64_t{sizes_le[at + 3]} << 24);
+    };
+    const std::uint64_t compressed = le32(0), uncompressed = le32(4);
+    if (compressed > body - 8)
+      fail("compressed size " + std::to_string(compressed) + " is beyond the end of the file");
+    if (n > (1ULL << 40) / point_bytes || uncompressed != n * point_bytes)
+      fail("the header announces " + announced + " but the uncompressed size is " +
+           std::to_string(uncompressed) + " bytes");
+    // LZF expands at most about 100-fold (a 3-byte back reference copies up to 264 bytes).
+    if (uncompressed > 100 * compressed + 64)
+      fail("uncompressed size " + std::to_string(uncompressed) +
+           " is impossible for a compressed size of " + std::to_string(compressed));
+  } else {
+    fail("DATA: unknown format '" + data + "' (known: ascii, binary, binary_compressed)");
+  }
+}
+
+}  // namespace
+
 std::vector<Eigen::Vector3f> readPcd(const std::filesystem::path& path) {
   if (!std::filesystem::exists(path)) throw InputError(path.string(), "file not found");
+  checkPcdHeader(path);
   pcl::PointCloud<pcl::PointXYZ> cloud;
   pcl::PCDReader reader;
   int status = -1;

@@ -6,6 +6,7 @@
 
 #include "roomscout/core/errors.hpp"
 #include "roomscout/core/occupancy_grid.hpp"
+#include "roomscout/io/image_file.hpp"
 
 namespace fs = std::filesystem;
 
@@ -36,9 +37,7 @@ std::vector<SegmentationDatasetMap> listSegmentationDataset(const fs::path& dire
 
 cv::Mat readGreyImage(const fs::path& png) {
   if (!fs::exists(png)) throw InputError(png.string(), "file not found");
-  cv::Mat grey = cv::imread(png.string(), cv::IMREAD_GRAYSCALE);
-  if (grey.empty()) throw InputError(png.string(), "cannot decode image");
-  return grey;
+  return readImageFile(png, cv::IMREAD_GRAYSCALE);
 }
 
 cv::Mat benchmarkStates(const cv::Mat& grey) {
