@@ -8,10 +8,12 @@
 
 #include <opencv2/core/mat.hpp>
 
+#include "roomscout/core/grid_limits.hpp"
+
 namespace roomscout::io {
 
-/// Largest image the readers decode: 2^26 pixels (8192 x 8192; 410 m square at 5 cm a pixel).
-inline constexpr std::size_t kMaxImagePixels = std::size_t{1} << 26;
+/// Largest image the readers decode: the largest grid roomscout builds (kMaxGridCells).
+inline constexpr std::size_t kMaxImagePixels = kMaxGridCells;
 
 /// Width and height stored in the header of a PNG, PNM (PBM/PGM/PPM), BMP or JPEG file;
 /// nullopt for other formats and for headers too short or malformed to hold them.

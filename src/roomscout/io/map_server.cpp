@@ -39,49 +39,18 @@ cv::Mat readImage(const std::filesystem::path& path) {
   return image;
 }
 
-/// An image's width and height read from its header alone, for PNG and PGM/PPM/PBM files
-/// (the formats of map_server maps); nullopt for other formats or an unreadable header.
+/// An image's width and height from the first bytes of its file (imageHeaderSize); nullopt
+/// for formats without a size in their header or an unreadable file.
 std::optional<cv::Size> headerSize(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
-  std::string head(1024, '\0');
+  std::string head(64 * 1024, '\0');
   in.read(head.data(), static_cast<std::streamsize>(head.size()));
   head.resize(static_cast<std::size_t>(std::max<std::streamsize>(0, in.gcount())));
-  const auto byte = [&](std::size_t i) {
-    return static_cast<std::uint32_t>(std::uint8_t(head[i]));
-  };
-  if (head.size() >= 24 && head.compare(0, 8, "\x89PNG\r\n\x1a\n") == 0 &&
-      head.compare(12, 4, "IHDR") == 0) {
-    const auto big_endian = [&](std::size_t i) {
-      return (byte(i) << 24) | (byte(i + 1) << 16) | (byte(i + 2) << 8) | byte(i + 3);
-    };
-    const std::uint32_t w = big_endian(16), h = big_endian(20);
-    if (w > 0x7fffffffu || h > 0x7fffffffu) return std::nullopt;
-    return cv::Size(static_cast<int>(w), static_cast<int>(h));
-  }
-  if (head.size() >= 2 && head[0] == 'P' && head[1] >= '1' && head[1] <= '6') {
-    // PNM: magic, then width and height as decimal numbers between whitespace and comments.
-    std::size_t i = 2;
-    long long value[2] = {0, 0};
-    for (long long& v : value) {
-      while (i < head.size() && (std::isspace(std::uint8_t(head[i])) || head[i] == '#')) {
-        if (head[i] == '#') {
-          while (i < head.size() && head[i] != '\n') ++i;
-        } else {
-          ++i;
-        }
-      }
-      const std::size_t digits = i;
-      while (i < head.size() && std::isdigit(std::uint8_t(head[i])) && v < 0x7fffffff)
-        v = v * 10 + (head[i++] - '0');
-      if (i == digits || v > 0x7fffffff) return std::nullopt;
-    }
-    return cv::Size(static_cast<int>(value[0]), static_cast<int>(value[1]));
-  }
-  return std::nullopt;
+  return imageHeaderSize(head);
 }
 
-/// Refuses a map image larger than kMaxGridCells, from its header when it has one that
-/// headerSize reads (before reading the file), else after decoding it; then reads it.
+/// Refuses a map image larger than kMaxGridCells, from its header when it has a size there
+/// (before reading the whole file), else after decoding it; then reads it.
 cv::Mat readMapImage(const std::filesystem::path& yaml_path, const MapServerMetadata& m) {
   const auto check = [&](cv::Size size) {
     checkGridSize(yaml_path.string(), "map", size.width, size.height, m.resolution_m);
