@@ -147,21 +147,24 @@ void checkPcdHeader(const std::filesystem::path& path) {
     if (!(words >> key) || key[0] == '#') continue;
     std::vector<std::string> values;
     for (std::string v; words >> v;) values.push_back(v);
-    if (key == "FIELDS" || key == "COLUMNS") {
+    // PCL recognises a keyword by its prefix ("COUNTS" is COUNT): so do we.
+    const auto is = [&](std::string_view k) { return key.compare(0, k.size(), k) == 0; };
+    if (is("FIELDS") || is("COLUMNS")) {
       names = values;
-    } else if (key == "TYPE") {
+    } else if (is("TYPE")) {
       types = values;
-    } else if (key == "SIZE") {
+    } else if (is("SIZE")) {
       sizes.clear();
-      for (const std::string& v : values) sizes.push_back(number(v, key));
-    } else if (key == "COUNT") {
+      for (const std::string& v : values) sizes.push_back(number(v, "SIZE"));
+    } else if (is("COUNT")) {
       counts.clear();
-      for (const std::string& v : values) counts.push_back(number(v, key));
-    } else if (key == "POINTS" || key == "WIDTH" || key == "HEIGHT") {
-      if (values.size() != 1) fail(key + ": expected one number");
-      const std::uint64_t value = number(values[0], key);
-      (key == "POINTS" ? points : key == "WIDTH" ? width : height) = value;
-    } else if (key == "DATA") {
+      for (const std::string& v : values) counts.push_back(number(v, "COUNT"));
+    } else if (is("POINTS") || is("WIDTH") || is("HEIGHT")) {
+      const std::string k = is("POINTS") ? "POINTS" : is("WIDTH") ? "WIDTH" : "HEIGHT";
+      if (values.empty()) fail(k + ": expected a number");
+      const std::uint64_t value = number(values[0], k);
+      (k == "POINTS" ? points : k == "WIDTH" ? width : height) = value;
+    } else if (is("DATA")) {
       data = values.empty() ? std::string("?") : values[0];
     }
   }
@@ -251,6 +254,16 @@ std::vector<Eigen::Vector3f> readPcd(const std::filesystem::path& path) {
     for (const pcl::PCLPointField& f : header.fields)
       xyz += f.name == "x" || f.name == "y" || f.name == "z";
     if (xyz != 3) throw InputError(path.string(), "cannot read PCD: no x y z fields");
+    // PCL's own reading of the header must agree with the check above: x, y and z floats,
+    // every field at least one value, points within the point size.
+    for (const pcl::PCLPointField& f : header.fields) {
+      if ((f.name == "x" || f.name == "y" || f.name == "z") &&
+          (f.datatype != pcl::PCLPointField::FLOAT32 || f.count != 1))
+        throw InputError(path.string(), "cannot read PCD: field " + f.name +
+                                            " is not a float (SIZE 4, TYPE F, COUNT 1)");
+      if (f.count < 1 || f.offset + pcl::getFieldSize(f.datatype) * f.count > header.point_step)
+        throw InputError(path.string(), "cannot read PCD: inconsistent field " + f.name);
+    }
     if (header.width * header.height == 0)
       return {};  // PCL's reader crashes on an empty binary body
     status = reader.read(path.string(), cloud);
