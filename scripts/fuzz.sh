@@ -8,7 +8,8 @@
 # Prints per target the executions, executions per second, coverage (cov: edges, ft:
 # features) and corpus size reached.
 # Usage: scripts/fuzz.sh [SECONDS] [BUILD_DIR]          (defaults: 60, build-fuzz)
-# ROOMSCOUT_FUZZ_TARGETS="world_yaml pcd" runs only those targets.
+# ROOMSCOUT_FUZZ_TARGETS="world_yaml pcd" runs only those targets; FUZZ_JOBS (default: the
+# number of cores) targets run at a time, one core each.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds="${1:-60}"
@@ -35,18 +36,32 @@ export ASAN_OPTIONS="${ASAN_OPTIONS:-halt_on_error=1:detect_leaks=1:abort_on_err
 export UBSAN_OPTIONS="${UBSAN_OPTIONS:-halt_on_error=1:print_stacktrace=1}"
 
 runs="$(cd "$build_dir" && pwd)/fuzz-runs"
+fuzzer_dir="$(cd "$build_dir" && pwd)/fuzz"
+# One target: a scratch copy of its corpus, then libFuzzer; its exit status in WORK/status.
+run_target() {
+  local name="$1" work="$runs/$1" status=0
+  rm -rf "$work"
+  mkdir -p "$work/corpus"
+  cp -r "fuzz/corpus/$name/." "$work/corpus/"
+  (cd "$work" && "$fuzzer_dir/${name}_fuzzer" -max_total_time="$seconds" \
+    -rss_limit_mb=1024 -malloc_limit_mb=1024 -timeout=5 -print_final_stats=1 \
+    -artifact_prefix="$work/" corpus > log.txt 2>&1) || status=$?
+  echo "$status" > "$work/status"
+}
+# As many targets at a time as there are cores (FUZZ_JOBS), each on one core.
+parallel="${FUZZ_JOBS:-$(nproc)}"
+for name in "${targets[@]}"; do
+  while (($(jobs -rp | wc -l) >= parallel)); do wait -n || true; done
+  echo "fuzz: $name for ${seconds}s"
+  run_target "$name" &
+done
+wait
+
 failed=()
 summary=()
 for name in "${targets[@]}"; do
   work="$runs/$name"
-  rm -rf "$work"
-  mkdir -p "$work/corpus"
-  cp -r "fuzz/corpus/$name/." "$work/corpus/"
-  echo "fuzz: $name for ${seconds}s"
-  status=0
-  (cd "$work" && "$OLDPWD/$build_dir/fuzz/${name}_fuzzer" -max_total_time="$seconds" \
-    -rss_limit_mb=1024 -malloc_limit_mb=1024 -timeout=5 -print_final_stats=1 \
-    -artifact_prefix="$work/" corpus > log.txt 2>&1) || status=$?
+  status="$(cat "$work/status" 2> /dev/null || echo 1)"
   # The last status line: "#N  DONE  cov: C ft: F corp: U/S ... exec/s: E ..."
   line="$(grep -E '^#[0-9]+' "$work/log.txt" | tail -n 1 || true)"
   execs="$(sed -n 's/^stat::number_of_executed_units: *//p' "$work/log.txt")"
