@@ -46,8 +46,8 @@ std::vector<ParameterRef> NearestFrontierOptions::parameters() {
   };
 }
 
-bool NearestFrontier::onBlacklist(const Vec2& p) const {
-  return std::any_of(blacklist_.begin(), blacklist_.end(), [&](const Vec2& b) {
+bool NearestFrontier::near(const std::vector<Vec2>& goals, const Vec2& p) const {
+  return std::any_of(goals.begin(), goals.end(), [&](const Vec2& b) {
     return std::abs(b.x() - p.x()) < options_.blacklist_radius_m &&
            std::abs(b.y() - p.y()) < options_.blacklist_radius_m;
   });
@@ -65,16 +65,24 @@ namespace {
 ///   cell, the traversable member nearest the robot is the goal instead.
 /// In both cases members on the blacklist are passed over, so that one failed spot does not
 /// drop a whole frontier (a ring around the robot is often a single frontier).
-template <typename Blacklisted>
+/// A centroid the robot failed to reach (`failed`) drops the frontier, as in explore_lite. One
+/// the progress watchdog gave up on (`slow`) gives way to the traversable member nearest to it:
+/// the watchdog measures progress as the straight-line distance to the frontier, so it also
+/// gives up on goals whose path first leads away from them, round a wall.
+template <typename Failed, typename Slow>
 std::optional<Vec2> traversableTarget(const Frontier& f, const Costmap& costmap, const Vec2& robot,
-                                      double max_centroid_offset_m, Blacklisted&& blacklisted) {
+                                      double max_centroid_offset_m, Failed&& failed, Slow&& slow) {
+  const auto blacklisted = [&](const Vec2& p) { return failed(p) || slow(p); };
   const GridGeometry& g = costmap.geometry();
   double offset2 = std::numeric_limits<double>::infinity();
   for (const Cell& m : f.cells)
     offset2 = std::min(offset2, (g.centerOf(m) - f.centroid_m).squaredNorm());
   const bool ring = offset2 > max_centroid_offset_m * max_centroid_offset_m;
   const Cell c = g.cellOf(f.centroid_m);
-  if (!ring && g.contains(c) && !costmap.isLethal(g.index(c))) return f.centroid_m;
+  if (!ring && g.contains(c) && !costmap.isLethal(g.index(c))) {
+    if (failed(f.centroid_m)) return std::nullopt;
+    if (!slow(f.centroid_m)) return f.centroid_m;
+  }
   const Vec2 reference = ring ? robot : f.centroid_m;
   std::optional<Vec2> best;
   double best_d = std::numeric_limits<double>::infinity();
@@ -107,10 +115,11 @@ Decision NearestFrontier::decide(const ExplorationInput& input) {
     const double cost = options_.potential_scale * f.min_distance_m * res -
                         options_.gain_scale * static_cast<double>(f.size()) * res;
     if (cost >= best_cost) continue;
-    const std::optional<Vec2> target =
-        traversableTarget(f, input.costmap, input.robot.position(), options_.max_centroid_offset_m,
-                          [&](const Vec2& p) { return onBlacklist(p); });
-    if (!target || onBlacklist(*target)) continue;
+    const std::optional<Vec2> target = traversableTarget(
+        f, input.costmap, input.robot.position(), options_.max_centroid_offset_m,
+        [&](const Vec2& p) { return near(failed_, p); },
+        [&](const Vec2& p) { return near(slow_, p); });
+    if (!target || near(failed_, *target) || near(slow_, *target)) continue;
     best = &f;
     best_cost = cost;
     best_target = *target;
@@ -127,7 +136,7 @@ Decision NearestFrontier::decide(const ExplorationInput& input) {
     has_previous_ = true;
   }
   if (input.time_s - last_progress_s_ > options_.progress_timeout_s) {
-    blacklist_.push_back(best_target);
+    slow_.push_back(best_target);
     has_previous_ = false;
     return decide(input);
   }

@@ -31,16 +31,18 @@ class NearestFrontier final : public ExplorationStrategy {
 
   std::string_view name() const override { return "nearest_frontier"; }
   Decision decide(const ExplorationInput& input) override;
-  void onGoalFailed(const Vec2& goal_m) override { blacklist_.push_back(goal_m); }
+  void onGoalFailed(const Vec2& goal_m) override { failed_.push_back(goal_m); }
   double replanPeriod_s() const override { return options_.planner_period_s; }
   std::vector<ParameterRef> parameters() override { return options_.parameters(); }
   void validateOptions() const override { options_.validate(); }
 
  private:
-  bool onBlacklist(const Vec2& p) const;
+  /// True when `p` lies within blacklist_radius_m (a box) of one of `goals`.
+  bool near(const std::vector<Vec2>& goals, const Vec2& p) const;
 
   NearestFrontierOptions options_;
-  std::vector<Vec2> blacklist_;
+  std::vector<Vec2> failed_;  ///< goals the robot failed to reach (explore_lite's blacklist)
+  std::vector<Vec2> slow_;    ///< goals the progress watchdog gave up on
   bool has_previous_ = false;
   Vec2 previous_goal_m_ = Vec2::Zero();
   double previous_distance_m_ = 0.0;

@@ -324,14 +324,20 @@ void SemanticExplorer::onGoalFailed(const Vec2& goal_m) {
 
 std::optional<Vec2> SemanticExplorer::endPhaseCell(const ExplorationInput& input) {
   const GridGeometry& g = input.grid.geometry();
-  for (const Vec2& f : end_cells_done_) markDisc(visited_, g, f, options_.observed_radius_m);
+  // A cell reached, or failed from close by, was looked at: the disc around it is done. One
+  // failed from afar (the stall watchdog fails whatever goal is current when the robot has
+  // idled, even one just set) says nothing of its neighbours, so only the cell is done.
+  const Vec2 robot = input.robot.position();
+  for (const Vec2& f : end_cells_done_) {
+    const bool near = (f - robot).norm() <= options_.observed_radius_m;
+    markDisc(visited_, g, f, near ? options_.observed_radius_m : 0.5 * g.resolution_m());
+  }
   end_cells_done_.clear();
   if (end_cell_ && g.contains(*end_cell_)) {
     const std::size_t i = g.index(g.cellOf(*end_cell_));
     if (input.grid.isUnknown(i) && !visited_[i] && !input.costmap.isLethal(i)) return end_cell_;
   }
   end_cell_.reset();
-  const Vec2 robot = input.robot.position();
   const std::vector<Cell> cells =
       reachableFrontierCells(input.grid, input.costmap, 4, &visited_, &robot);
   // Not those opening onto a pocket (pocketArea_m2: relative to the map by now).

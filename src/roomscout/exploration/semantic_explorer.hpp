@@ -245,7 +245,8 @@ class SemanticExplorer final : public ExplorationStrategy {
   bool endTest(const ExplorationInput& input);
   /// The end phase's goal: the reachable frontier cell (as the end test counts them) nearest by
   /// C that the robot has not come within observed_radius_m of and that opens onto no pocket,
-  /// or none.
+  /// or none. An end cell failed while the robot was farther than observed_radius_m from it
+  /// rules out that cell only.
   std::optional<Vec2> endPhaseCell(const ExplorationInput& input);
   /// The pocket threshold now: pocket_area_m2, or once idle pocket_area_fraction of the known
   /// free area if that is less.
