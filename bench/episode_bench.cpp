@@ -4,9 +4,9 @@
 #include <benchmark/benchmark.h>
 
 #include "roomscout/exploration/strategy_registry.hpp"
-#include "roomscout/io/builtin_worlds.hpp"
 #include "roomscout/mapping/occupancy_mapper.hpp"
 #include "roomscout/planning/astar_planner.hpp"
+#include "roomscout/sim/builtin_worlds.hpp"
 #include "roomscout/sim/episode.hpp"
 #include "roomscout/sim/exploration_truth.hpp"
 
@@ -14,7 +14,7 @@ namespace roomscout {
 namespace {
 
 const sim::WorldModel& largeOffice() {
-  static const sim::WorldModel model(io::loadBuiltinWorld("large_office"));
+  static const sim::WorldModel model(sim::loadBuiltinWorld("large_office"));
   return model;
 }
 

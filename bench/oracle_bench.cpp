@@ -3,19 +3,19 @@
 
 #include <benchmark/benchmark.h>
 
-#include "roomscout/io/builtin_worlds.hpp"
+#include "roomscout/experiment/oracle_tour.hpp"
+#include "roomscout/sim/builtin_worlds.hpp"
 #include "roomscout/sim/episode.hpp"
-#include "roomscout/sim/oracle_tour.hpp"
 
 namespace {
 
 void BM_OracleTour(benchmark::State& state, const char* world_name) {
-  const roomscout::sim::WorldModel world(roomscout::io::loadBuiltinWorld(world_name));
-  const roomscout::sim::OracleTourOptions options =
-      roomscout::sim::oracleTourOptionsFor(roomscout::sim::EpisodeConfig{});
-  roomscout::sim::OracleTour tour;
+  const roomscout::sim::WorldModel world(roomscout::sim::loadBuiltinWorld(world_name));
+  const roomscout::experiment::OracleTourOptions options =
+      roomscout::experiment::oracleTourOptionsFor(roomscout::sim::EpisodeConfig{});
+  roomscout::experiment::OracleTour tour;
   for (auto _ : state) {
-    tour = roomscout::sim::planOracleTour(world, options);
+    tour = roomscout::experiment::planOracleTour(world, options);
     benchmark::DoNotOptimize(tour.length_m);
   }
   state.counters["length_m"] = tour.length_m;

@@ -4,8 +4,8 @@
 
 #include <benchmark/benchmark.h>
 
-#include "roomscout/io/builtin_worlds.hpp"
 #include "roomscout/mapping/point_cloud_map.hpp"
+#include "roomscout/sim/builtin_worlds.hpp"
 #include "roomscout/sim/exploration_truth.hpp"
 #include "roomscout/sim/lidar_simulator.hpp"
 
@@ -18,7 +18,7 @@ namespace roomscout {
 namespace {
 
 struct Office {
-  sim::WorldModel model{io::loadBuiltinWorld("large_office")};
+  sim::WorldModel model{sim::loadBuiltinWorld("large_office")};
   sim::ColumnWorld columns{model};
   std::vector<Pose2> poses;
   Office() {

@@ -5,7 +5,7 @@
 #include <benchmark/benchmark.h>
 
 #include "roomscout/exploration/strategy_registry.hpp"
-#include "roomscout/io/builtin_worlds.hpp"
+#include "roomscout/sim/builtin_worlds.hpp"
 #include "roomscout/sim/episode.hpp"
 #include "roomscout/sim/laser_simulator.hpp"
 #include "roomscout/sim/sensor_noise.hpp"
@@ -24,7 +24,7 @@ struct Drive {
 /// tb3 profile's laser and odometry noise.
 const Drive& smallHouseDrive() {
   static const Drive drive = [] {
-    const sim::WorldModel model(io::loadBuiltinWorld("small_house"));
+    const sim::WorldModel model(sim::loadBuiltinWorld("small_house"));
     sim::EpisodeConfig config;
     auto strategy = createStrategy("nearest_frontier", 1);
     const sim::EpisodeResult r = sim::runEpisode(model, config, *strategy, 1);
@@ -65,7 +65,7 @@ BENCHMARK_CAPTURE(BM_SlamUpdate, icp, "icp")->Arg(100000)->Unit(benchmark::kSeco
 BENCHMARK_CAPTURE(BM_SlamUpdate, rbpf, "rbpf")->Arg(1500)->Unit(benchmark::kSecond)->Iterations(1);
 
 void BM_ExploreLargeOfficeWithTb3NoiseAndIcpSlam(benchmark::State& state) {
-  const sim::WorldModel model(io::loadBuiltinWorld("large_office"));
+  const sim::WorldModel model(sim::loadBuiltinWorld("large_office"));
   sim::EpisodeResult r;
   for (auto _ : state) {
     sim::EpisodeConfig config;

@@ -7,14 +7,14 @@
 #include <benchmark/benchmark.h>
 
 #include "roomscout/exploration/strategy_registry.hpp"
-#include "roomscout/io/builtin_worlds.hpp"
+#include "roomscout/sim/builtin_worlds.hpp"
 #include "roomscout/sim/episode.hpp"
 
 namespace roomscout {
 namespace {
 
 void BM_StrategyDecisionLargeOffice(benchmark::State& state, const std::string& method) {
-  static const sim::WorldModel model(io::loadBuiltinWorld("large_office"));
+  static const sim::WorldModel model(sim::loadBuiltinWorld("large_office"));
   sim::EpisodeResult result;
   for (auto _ : state) {
     sim::EpisodeConfig config;

@@ -10,6 +10,7 @@
 #include "fuzz_support.hpp"
 #include "roomscout/core/errors.hpp"
 #include "roomscout/io/map_server.hpp"
+#include "roomscout/sim/image_world.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace roomscout;
@@ -29,7 +30,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   } catch (const InputError&) {
   }
   try {
-    const sim::World world = io::loadImageWorld(dir / "map.yaml", labels);
+    const sim::World world = sim::loadImageWorld(dir / "map.yaml", labels);
     (void)world;
   } catch (const InputError&) {
   }

@@ -1,4 +1,4 @@
-// Fuzz target: the room-label image of `--room-labels`, read by io::loadImageWorld. The input
+// Fuzz target: the room-label image of `--room-labels`, read by sim::loadImageWorld. The input
 // is the label image; the harness writes a map_server map of the same size beside it (found
 // by decoding the input first), so that the labels get past the size check. The only
 // accepted failure is InputError.
@@ -12,6 +12,7 @@
 #include "fuzz_support.hpp"
 #include "roomscout/core/errors.hpp"
 #include "roomscout/io/map_server.hpp"
+#include "roomscout/sim/image_world.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace roomscout;
@@ -37,7 +38,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   fuzz::writeFile(dir / "map.pgm", pgm);
   fuzz::writeFile(dir / "map.yaml", "image: map.pgm\nresolution: 0.05\norigin: [0, 0, 0]\n");
   try {
-    const sim::World world = io::loadImageWorld(dir / "map.yaml", dir / "labels.png");
+    const sim::World world = sim::loadImageWorld(dir / "map.yaml", dir / "labels.png");
     (void)world;
   } catch (const InputError&) {
   }

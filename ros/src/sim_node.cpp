@@ -49,7 +49,6 @@
 
 #include "roomscout/core/errors.hpp"
 #include "roomscout/experiment/episode_setup.hpp"
-#include "roomscout/io/world_source.hpp"
 #include "roomscout/mapping/occupancy_mapper.hpp"
 #include "roomscout/planning/astar_planner.hpp"
 #include "roomscout/planning/costmap.hpp"
@@ -62,6 +61,7 @@
 #include "roomscout/sim/lidar_simulator.hpp"
 #include "roomscout/sim/robot.hpp"
 #include "roomscout/sim/world_model.hpp"
+#include "roomscout/sim/world_source.hpp"
 #include "roomscout_ros/grid_conversions.hpp"
 #include "roomscout_ros/node_params.hpp"
 
@@ -227,7 +227,7 @@ Scenario loadScenario(const NodeParameters& p) {
   try {
     std::optional<std::filesystem::path> labels;
     if (!p.room_labels.empty()) labels = p.room_labels;
-    const sim::World world = io::loadWorld(p.world, labels);
+    const sim::World world = sim::loadWorld(p.world, labels);
     s.model = std::make_unique<const sim::WorldModel>(world, s.config.world);
   } catch (const std::exception& e) {
     throw OptionError((p.room_labels.empty() ? "~world: " : "~world/~room_labels: ") +

@@ -11,7 +11,7 @@
 #include <sstream>
 #include <string>
 
-#include "roomscout/io/builtin_worlds.hpp"
+#include "roomscout/sim/builtin_worlds.hpp"
 
 namespace roomscout::experiment {
 namespace {
@@ -38,7 +38,7 @@ class RecordedEpisodeTest : public ::testing::Test {
     settings.max_time_s = 120.0;  // small_house: about a third explored, dozens of map updates
     settings.background_maps = background;
     EpisodeSetup setup = makeEpisodeSetup(method, 2, settings);
-    const sim::WorldModel model(io::loadBuiltinWorld("small_house"), setup.config.world);
+    const sim::WorldModel model(sim::loadBuiltinWorld("small_house"), setup.config.world);
     return runRecordedEpisode(model, setup, settings, out);
   }
 

@@ -14,8 +14,8 @@
 #include <vector>
 
 #include "roomscout/exploration/strategy_registry.hpp"
-#include "roomscout/io/builtin_worlds.hpp"
 #include "roomscout/maps/semantic_map.hpp"
+#include "roomscout/sim/builtin_worlds.hpp"
 #include "roomscout/sim/episode.hpp"
 #include "roomscout/sim/exploration_truth.hpp"
 
@@ -886,7 +886,7 @@ TEST(SemanticExplorerTest, ScoreOnlyMakesNoSemanticDraws) {
 TEST(SemanticExplorerTest, ThePapersMethodExploresTheSmallHouseAndEndsByItself) {
   sim::EpisodeConfig config;
   config.resolve();
-  const sim::WorldModel model(io::loadBuiltinWorld("small_house"), config.world);
+  const sim::WorldModel model(sim::loadBuiltinWorld("small_house"), config.world);
   auto strategy = createStrategy("semantic_paper", 1);
   const sim::EpisodeResult r = sim::runEpisode(model, config, *strategy, 1);
   EXPECT_GE(r.exploration_rate, 0.98);

@@ -11,6 +11,7 @@
 #include "roomscout/core/errors.hpp"
 #include "roomscout/io/map_server.hpp"
 #include "roomscout/io/segmentation_dataset.hpp"
+#include "roomscout/sim/image_world.hpp"
 #include "test_support.hpp"
 
 namespace roomscout::io {
@@ -76,14 +77,14 @@ TEST(FuzzRegression, MapImageHeaderOfAHugeImageIsRejectedBeforeDecoding) {
   // The map loaders refuse it as a grid too large (grid_limits.hpp), naming the map's YAML.
   const std::string too_large = yaml.string() + ": map is 30000 x 30000 cells";
   EXPECT_TRUE(Contains(inputErrorOf([&] { loadOccupancyMap(yaml); }), too_large));
-  EXPECT_TRUE(Contains(inputErrorOf([&] { loadImageWorld(yaml, std::nullopt); }), too_large));
+  EXPECT_TRUE(Contains(inputErrorOf([&] { sim::loadImageWorld(yaml, std::nullopt); }), too_large));
   const std::string expected = image.string() + ": image header gives 30000x30000 pixels";
   EXPECT_TRUE(Contains(inputErrorOf([&] { readGreyImage(image); }), expected));
   // The same header as a room label image of a valid map.
   dir.write("small.pgm", "P5\n2 2\n255\n\xfe\xfe\xfe\xfe");
   const auto small =
       dir.write("small.yaml", "image: small.pgm\nresolution: 0.05\norigin: [0, 0]\n");
-  EXPECT_TRUE(Contains(inputErrorOf([&] { loadImageWorld(small, image); }),
+  EXPECT_TRUE(Contains(inputErrorOf([&] { sim::loadImageWorld(small, image); }),
                        image.string() + ": room label image is 30000x30000 pixels"));
 }
 

@@ -1,4 +1,5 @@
 #include "roomscout/io/map_server.hpp"
+#include "roomscout/sim/image_world.hpp"
 
 #include <cstdint>
 #include <string>
@@ -192,7 +193,7 @@ TEST(LoadMapServerYaml, MissingYamlOrImageFile) {
   EXPECT_TRUE(Contains(inputErrorOf([&] { loadMapServerYaml(dir / "none.yaml"); }),
                        (dir / "none.yaml").string() + ": file not found"));
   const auto yaml = dir.write("map.yaml", "image: gone.pgm\n" + kYamlHead);
-  const std::string message = inputErrorOf([&] { loadImageWorld(yaml, std::nullopt); });
+  const std::string message = inputErrorOf([&] { sim::loadImageWorld(yaml, std::nullopt); });
   EXPECT_TRUE(Contains(message, yaml.string() + ": image file not found: "));
   EXPECT_TRUE(Contains(message, (dir / "gone.pgm").string()));
   EXPECT_TRUE(Contains(inputErrorOf([&] { loadOccupancyMap(yaml); }), "image file not found"));
@@ -202,19 +203,19 @@ TEST(LoadImageWorld, CorruptImageIsNamed) {
   const TempDir dir;
   const auto image = dir.write("map.png", "\x89PNG\r\n\x1a\n this is not really a png");
   const auto yaml = dir.write("map.yaml", "image: map.png\n" + kYamlHead);
-  EXPECT_TRUE(Contains(inputErrorOf([&] { loadImageWorld(yaml, std::nullopt); }),
+  EXPECT_TRUE(Contains(inputErrorOf([&] { sim::loadImageWorld(yaml, std::nullopt); }),
                        image.string() + ": cannot decode image"));
   EXPECT_TRUE(Contains(inputErrorOf([&] { loadOccupancyMap(yaml); }),
                        image.string() + ": cannot decode image"));
   dir.write("map.png", "");
-  EXPECT_TRUE(Contains(inputErrorOf([&] { loadImageWorld(yaml, std::nullopt); }),
+  EXPECT_TRUE(Contains(inputErrorOf([&] { sim::loadImageWorld(yaml, std::nullopt); }),
                        image.string() + ": cannot decode image"));
 }
 
 TEST(LoadImageWorld, ImageWithoutFreePixelIsRejected) {
   const TempDir dir;
   const auto yaml = writeMap(dir, cv::Mat(4, 4, CV_8UC1, cv::Scalar(100)));  // all unknown
-  EXPECT_TRUE(Contains(inputErrorOf([&] { loadImageWorld(yaml, std::nullopt); }),
+  EXPECT_TRUE(Contains(inputErrorOf([&] { sim::loadImageWorld(yaml, std::nullopt); }),
                        (dir / "map.png").string() + ": no free pixel"));
   // As a map (not a world) it is fine: everything unknown.
   const OccupancyGrid grid = loadOccupancyMap(yaml);
@@ -227,7 +228,7 @@ TEST(LoadImageWorld, BuildsSolidMaskNameAndSource) {
   image.at<std::uint8_t>(0, 1) = 0;    // occupied
   image.at<std::uint8_t>(1, 2) = 205;  // unknown: solid too
   const auto yaml = writeMap(dir, image);
-  const sim::World world = loadImageWorld(yaml, std::nullopt);
+  const sim::World world = sim::loadImageWorld(yaml, std::nullopt);
   EXPECT_EQ(world.name, "map");
   EXPECT_EQ(world.source, yaml.string());
   EXPECT_FALSE(world.start_given);
@@ -255,7 +256,7 @@ TEST(LoadImageWorld, GreyscaleRoomLabels) {
   labels.at<std::uint8_t>(1, 0) = 3;
   labels.at<std::uint8_t>(2, 1) = 3;
   cv::imwrite((dir / "rooms.png").string(), labels);
-  const sim::World world = loadImageWorld(yaml, dir / "rooms.png");
+  const sim::World world = sim::loadImageWorld(yaml, dir / "rooms.png");
   ASSERT_EQ(world.rooms.size(), 2u);
   EXPECT_EQ(world.rooms[0].id, 3);
   EXPECT_EQ(world.rooms[0].name, "room_3");
@@ -277,7 +278,7 @@ TEST(LoadImageWorld, SixteenBitRoomLabels) {
   labels.at<std::uint16_t>(0, 0) = 300;
   labels.at<std::uint16_t>(0, 2) = 5;
   cv::imwrite((dir / "rooms.png").string(), labels);
-  const sim::World world = loadImageWorld(yaml, dir / "rooms.png");
+  const sim::World world = sim::loadImageWorld(yaml, dir / "rooms.png");
   ASSERT_EQ(world.rooms.size(), 2u);
   EXPECT_EQ(world.rooms[0].id, 5);
   EXPECT_EQ(world.rooms[1].id, 300);
@@ -294,7 +295,7 @@ TEST(LoadImageWorld, ColourRoomLabelsNumberedByFirstAppearance) {
   labels.at<cv::Vec3b>(1, 1) = {0, 0, 255};      // red again
   labels.at<cv::Vec3b>(1, 2) = {10, 20, 30};     // -> 3
   cv::imwrite((dir / "rooms.png").string(), labels);
-  const sim::World world = loadImageWorld(yaml, dir / "rooms.png");
+  const sim::World world = sim::loadImageWorld(yaml, dir / "rooms.png");
   ASSERT_EQ(world.rooms.size(), 3u);
   for (int i = 0; i < 3; ++i) {
     EXPECT_EQ(world.rooms[i].id, i + 1);
@@ -312,14 +313,14 @@ TEST(LoadImageWorld, RoomLabelImageErrors) {
   const TempDir dir;
   const auto yaml = writeMap(dir, cv::Mat(2, 3, CV_8UC1, cv::Scalar(254)));
   cv::imwrite((dir / "small.png").string(), cv::Mat(3, 2, CV_8UC1, cv::Scalar(1)));
-  const std::string message = inputErrorOf([&] { loadImageWorld(yaml, dir / "small.png"); });
+  const std::string message = inputErrorOf([&] { sim::loadImageWorld(yaml, dir / "small.png"); });
   EXPECT_TRUE(Contains(message, (dir / "small.png").string() + ": "));
   EXPECT_TRUE(Contains(message, "is 2x3 pixels but the map image is 3x2"));
 
   const auto corrupt = dir.write("corrupt.png", "not an image");
-  EXPECT_TRUE(Contains(inputErrorOf([&] { loadImageWorld(yaml, corrupt); }),
+  EXPECT_TRUE(Contains(inputErrorOf([&] { sim::loadImageWorld(yaml, corrupt); }),
                        corrupt.string() + ": cannot decode image"));
-  EXPECT_TRUE(Contains(inputErrorOf([&] { loadImageWorld(yaml, dir / "none.png"); }),
+  EXPECT_TRUE(Contains(inputErrorOf([&] { sim::loadImageWorld(yaml, dir / "none.png"); }),
                        (dir / "none.png").string() + ": file not found"));
 }
 
@@ -363,7 +364,7 @@ TEST(SaveOccupancyMap, RoundTripReproducesStatesAndGeometry) {
   EXPECT_EQ(dir.entries(), (Names{"round.pgm", "round.yaml"}));
 
   // The saved map also loads as a world, solid wherever it is not free.
-  const sim::World world = loadImageWorld(dir / "round.yaml", std::nullopt);
+  const sim::World world = sim::loadImageWorld(dir / "round.yaml", std::nullopt);
   const GridGeometry& g = grid.geometry();
   for (int y = 0; y < g.height(); ++y) {
     for (int x = 0; x < g.width(); ++x) {

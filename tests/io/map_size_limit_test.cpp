@@ -11,6 +11,7 @@
 #include "roomscout/core/errors.hpp"
 #include "roomscout/core/grid_limits.hpp"
 #include "roomscout/io/map_server.hpp"
+#include "roomscout/sim/image_world.hpp"
 #include "test_support.hpp"
 
 namespace roomscout::io {
@@ -56,7 +57,7 @@ TEST(MapSizeLimit, PgmHeaderOfAHugeMapIsRefusedBeforeLoading) {
       ": map is 10000 x 10000 cells (100000000) at 0.05 m; roomscout handles at most 25000000 "
       "cells (about 62500 m^2 at this resolution)";
   EXPECT_EQ(inputErrorOf([&] { (void)loadOccupancyMap(yaml); }), expected);
-  EXPECT_EQ(inputErrorOf([&] { (void)loadImageWorld(yaml, std::nullopt); }), expected);
+  EXPECT_EQ(inputErrorOf([&] { (void)sim::loadImageWorld(yaml, std::nullopt); }), expected);
 }
 
 TEST(MapSizeLimit, PngHeaderOfAHugeMapIsRefusedBeforeLoading) {
@@ -103,9 +104,10 @@ TEST(MapSizeLimit, RoomLabelsOfAnotherSizeAreRefusedFromTheirHeader) {
   cv::Mat image(20, 30, CV_8U, cv::Scalar(254));
   ASSERT_TRUE(cv::imwrite((dir / "map.pgm").string(), image));
   writePngHeader(dir, "labels.png", 40000, 40000);
-  EXPECT_TRUE(Contains(
-      inputErrorOf([&] { (void)loadImageWorld(writeYaml(dir, "map.pgm"), dir / "labels.png"); }),
-      "room label image is 40000x40000 pixels but the map image is 30x20"));
+  EXPECT_TRUE(Contains(inputErrorOf([&] {
+                         (void)sim::loadImageWorld(writeYaml(dir, "map.pgm"), dir / "labels.png");
+                       }),
+                       "room label image is 40000x40000 pixels but the map image is 30x20"));
 }
 
 TEST(CheckGridSize, NamesTheSettingAndSurvivesAbsurdSizes) {

@@ -16,8 +16,8 @@
 
 #include "roomscout/experiment/episode_setup.hpp"
 #include "roomscout/io/pcd_io.hpp"
-#include "roomscout/io/world_source.hpp"
 #include "roomscout/sim/episode.hpp"
+#include "roomscout/sim/world_source.hpp"
 #include "ros_test_support.hpp"
 
 namespace roomscout::ros1::test {
@@ -56,7 +56,7 @@ sim::EpisodeResult inProcess(const std::string& method, std::uint64_t seed,
   experiment::RunSettings settings;
   settings.config_file = config;
   experiment::EpisodeSetup setup = experiment::makeEpisodeSetup(method, seed, settings);
-  const sim::WorldModel model(io::loadWorld("small_house", std::nullopt), setup.config.world);
+  const sim::WorldModel model(sim::loadWorld("small_house", std::nullopt), setup.config.world);
   Explorer explorer(*setup.strategy, sim::explorerOptionsFor(model, setup.config));
   return sim::runEpisode(model, setup.config, explorer, seed);
 }
@@ -68,7 +68,7 @@ TEST(RosSystem, SemanticExploresSmallHouseOverRosAsInProcess) {
   const std::filesystem::path options = master.dir() / "options.yaml";
   {
     sim::EpisodeConfig config;
-    const sim::WorldModel model(io::loadWorld("small_house", std::nullopt), config.world);
+    const sim::WorldModel model(sim::loadWorld("small_house", std::nullopt), config.world);
     const double stall = sim::explorerOptionsFor(model, config).goals.stall_min_new_area_m2;
     std::FILE* f = std::fopen(options.c_str(), "w");
     std::fprintf(f, "episode:\n  map_mode: growing\n  stall_min_new_area_m2: %.17g\n", stall);

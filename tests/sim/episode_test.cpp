@@ -5,9 +5,9 @@
 #include <gtest/gtest.h>
 
 #include "roomscout/core/errors.hpp"
+#include "roomscout/experiment/run_outputs.hpp"
 #include "roomscout/exploration/strategy_registry.hpp"
-#include "roomscout/io/builtin_worlds.hpp"
-#include "roomscout/io/run_outputs.hpp"
+#include "roomscout/sim/builtin_worlds.hpp"
 #include "roomscout/sim/exploration_truth.hpp"
 #include "test_worlds.hpp"
 
@@ -25,7 +25,7 @@ EpisodeResult explore(const World& world, const std::string& method, std::uint64
 class BuiltinWorldExploration : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(BuiltinWorldExploration, NearestFrontierExploresAtLeast98Percent) {
-  const EpisodeResult r = explore(io::loadBuiltinWorld(GetParam()), "nearest_frontier", 1);
+  const EpisodeResult r = explore(sim::loadBuiltinWorld(GetParam()), "nearest_frontier", 1);
   EXPECT_GE(r.exploration_rate, 0.98);
   ASSERT_TRUE(r.t98_s.has_value());
   ASSERT_TRUE(r.l98_m.has_value());
@@ -58,7 +58,7 @@ TEST_P(EveryMethodExploresTheHouses, ReachesAtLeast98PercentAndEnds) {
   const auto& [world_name, method] = GetParam();
   EpisodeConfig config;
   config.resolve();
-  const WorldModel model(io::loadBuiltinWorld(world_name), config.world);
+  const WorldModel model(sim::loadBuiltinWorld(world_name), config.world);
   auto strategy = createStrategy(method, 1);
   const EpisodeResult r = runEpisode(model, config, *strategy, 1);
   EXPECT_GE(r.exploration_rate, 0.98);
@@ -93,7 +93,7 @@ INSTANTIATE_TEST_SUITE_P(MediumHouse, EveryMethodExploresTheHouses,
                          });
 
 TEST(Episode, SameSeedSameMetrics) {
-  const World world = io::loadBuiltinWorld("small_house");
+  const World world = sim::loadBuiltinWorld("small_house");
   const EpisodeResult a = explore(world, "nearest_frontier", 5);
   const EpisodeResult b = explore(world, "nearest_frontier", 5);
   EXPECT_EQ(a.exploration_rate, b.exploration_rate);
@@ -128,7 +128,7 @@ TEST(Episode, RoomCountsAreNullWithoutGroundTruthRooms) {
   unlabelled.rooms.clear();
   const EpisodeResult without = explore(unlabelled, "nearest_frontier", 1);
   EXPECT_FALSE(without.room_truth);
-  const nlohmann::json metrics = io::metricsJson({}, without);
+  const nlohmann::json metrics = experiment::metricsJson({}, without);
   EXPECT_TRUE(metrics.at("revisits").is_null());
   EXPECT_TRUE(metrics.at("rooms_entered").is_null());
   EXPECT_TRUE(metrics.at("revisits_98").is_null());
@@ -136,8 +136,8 @@ TEST(Episode, RoomCountsAreNullWithoutGroundTruthRooms) {
   const EpisodeResult with = explore(testing::squareRoom(4.0, 0.2), "nearest_frontier", 1);
   EXPECT_TRUE(with.room_truth);
   EXPECT_EQ(with.rooms_entered, 1);
-  EXPECT_EQ(io::metricsJson({}, with).at("revisits"), 0);
-  EXPECT_EQ(io::metricsJson({}, with).at("revisits_98"), 0);
+  EXPECT_EQ(experiment::metricsJson({}, with).at("revisits"), 0);
+  EXPECT_EQ(experiment::metricsJson({}, with).at("revisits_98"), 0);
 }
 
 TEST(Episode, BumpingIntoAnObstacleTheLaserCannotSeeRecoversAndEnds) {
@@ -179,7 +179,7 @@ class ExplorerLoop : public ::testing::TestWithParam<RecordedRun> {};
 
 TEST_P(ExplorerLoop, ReproducesTheSimulatorsOwnLoopExactly) {
   const RecordedRun& want = GetParam();
-  const EpisodeResult r = explore(io::loadBuiltinWorld("small_house"), want.method, 1);
+  const EpisodeResult r = explore(sim::loadBuiltinWorld("small_house"), want.method, 1);
   ASSERT_TRUE(r.t98_s && r.l98_m && r.t_done_s);
   EXPECT_EQ(*r.t98_s, want.t98_s);
   EXPECT_EQ(*r.l98_m, want.l98_m);
@@ -209,7 +209,7 @@ class GrowingMap : public ::testing::TestWithParam<std::string> {};
 TEST_P(GrowingMap, ExploresTheSmallHouseAsOnTheFixedGrid) {
   EpisodeConfig config;
   config.resolve();
-  const WorldModel model(io::loadBuiltinWorld("small_house"), config.world);
+  const WorldModel model(sim::loadBuiltinWorld("small_house"), config.world);
   auto fixed_strategy = createStrategy(GetParam(), 2);
   const EpisodeResult fixed = runEpisode(model, config, *fixed_strategy, 2);
   config.episode.map_mode = "growing";

@@ -7,7 +7,7 @@
 #include <random>
 
 #include "roomscout/core/errors.hpp"
-#include "roomscout/io/builtin_worlds.hpp"
+#include "roomscout/sim/builtin_worlds.hpp"
 #include "test_worlds.hpp"
 
 namespace roomscout::sim {
@@ -191,7 +191,7 @@ TEST(LidarSimulator, SameHitsAsThePlainCastWithMoreKindsOfColumnThanItsTable) {
 }
 
 TEST(LidarSimulator, SameHitsAsThePlainCastInTheLargeOffice) {
-  expectSameAsReference(io::loadBuiltinWorld("large_office"), 3, 9);
+  expectSameAsReference(sim::loadBuiltinWorld("large_office"), 3, 9);
 }
 
 TEST(LidarSimulator, RingToAWallAtAKnownDistance) {

@@ -4,7 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "roomscout/exploration/strategy_registry.hpp"
-#include "roomscout/io/builtin_worlds.hpp"
+#include "roomscout/sim/builtin_worlds.hpp"
 #include "roomscout/sim/episode.hpp"
 
 namespace roomscout::sim {
@@ -16,7 +16,7 @@ EpisodeResult exploreSmallHouse(const std::string& method, const std::string& no
   config.noise.profile = noise;
   config.slam.mode = slam;
   config.resolve();
-  const WorldModel model(io::loadBuiltinWorld("small_house"), config.world);
+  const WorldModel model(sim::loadBuiltinWorld("small_house"), config.world);
   auto strategy = createStrategy(method, seed);
   return runEpisode(model, config, *strategy, seed);
 }

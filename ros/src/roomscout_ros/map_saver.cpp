@@ -1,6 +1,6 @@
 #include "roomscout_ros/map_saver.hpp"
 
-#include "roomscout/io/analysis_maps_output.hpp"
+#include "roomscout/experiment/analysis_maps_output.hpp"
 #include "roomscout/io/atomic_file.hpp"
 #include "roomscout/io/map_server.hpp"
 #include "roomscout/io/pcd_io.hpp"
@@ -17,7 +17,7 @@ void saveMaps(const std::filesystem::path& directory, const OccupancyGrid& grid,
                      "roomscout point cloud map, map frame of occupancy.yaml", 0.005);
   io::writeImageAtomic(directory / "pointcloud.png",
                        io::renderPointCloud(cloud_points, cloud_top_m));
-  io::writeAnalysisMaps(directory, rooms, skeleton, grid, nullptr);
+  experiment::writeAnalysisMaps(directory, rooms, skeleton, grid, nullptr);
 }
 
 }  // namespace roomscout::ros1

@@ -17,11 +17,11 @@
 #include "roomscout/experiment/recorded_episode.hpp"
 #include "roomscout/exploration/strategy_registry.hpp"
 #include "roomscout/io/atomic_file.hpp"
-#include "roomscout/io/builtin_worlds.hpp"
 #include "roomscout/io/pcd_io.hpp"
-#include "roomscout/io/world_source.hpp"
+#include "roomscout/sim/builtin_worlds.hpp"
 #include "roomscout/sim/episode.hpp"
 #include "roomscout/sim/world_model.hpp"
+#include "roomscout/sim/world_source.hpp"
 
 namespace roomscout::cli {
 namespace {
@@ -92,7 +92,7 @@ int runExplore(const ExploreArgs& args) {
 
   std::optional<std::filesystem::path> labels;
   if (!args.room_labels.empty()) labels = args.room_labels;
-  sim::World world = io::loadWorld(args.world, labels);
+  sim::World world = sim::loadWorld(args.world, labels);
   if (!args.start.empty()) {
     world.start = parseStart(args.start);
     world.start_given = true;
@@ -129,8 +129,8 @@ int runExplore(const ExploreArgs& args) {
 
 int runWorlds() {
   std::printf("%-16s %10s %6s  %s\n", "world", "free m^2", "rooms", "description");
-  for (const std::string& name : io::builtinWorldNames()) {
-    const sim::World world = io::loadBuiltinWorld(name);
+  for (const std::string& name : sim::builtinWorldNames()) {
+    const sim::World world = sim::loadBuiltinWorld(name);
     const sim::WorldModel model(world);
     std::printf("%-16s %10.1f %6zu  %s\n", name.c_str(), model.freeArea_m2(), world.rooms.size(),
                 world.description.c_str());

@@ -7,7 +7,7 @@
 #include <set>
 
 #include "roomscout/core/errors.hpp"
-#include "roomscout/io/builtin_worlds.hpp"
+#include "roomscout/sim/builtin_worlds.hpp"
 
 namespace roomscout::experiment {
 namespace fs = std::filesystem;
@@ -15,7 +15,7 @@ namespace fs = std::filesystem;
 std::vector<BenchWorld> expandWorlds(const std::vector<std::string>& items) {
   std::vector<BenchWorld> worlds;
   for (const std::string& item : items) {
-    if (io::isBuiltinWorld(item)) {
+    if (sim::isBuiltinWorld(item)) {
       worlds.push_back({item, item, "builtin"});
       continue;
     }
@@ -39,7 +39,8 @@ std::vector<BenchWorld> expandWorlds(const std::vector<std::string>& items) {
       worlds.push_back({path.stem().string(), item, parent.filename().string()});
     } else {
       std::string known;
-      for (const std::string& n : io::builtinWorldNames()) known += (known.empty() ? "" : ", ") + n;
+      for (const std::string& n : sim::builtinWorldNames())
+        known += (known.empty() ? "" : ", ") + n;
       throw InputError(
           item, "no such file or folder, and not a built-in world (built-in: " + known + ")");
     }

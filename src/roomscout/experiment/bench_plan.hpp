@@ -14,7 +14,7 @@ namespace roomscout::experiment {
 /// One world of a bench, as named in results and directories.
 struct BenchWorld {
   std::string name;   ///< a built-in name, or the file's stem (unique within a bench)
-  std::string spec;   ///< what io::loadWorld takes: the built-in name or the file path
+  std::string spec;   ///< what sim::loadWorld takes: the built-in name or the file path
   std::string group;  ///< "builtin", or the name of the folder holding the file (reports
                       ///< summarise a group such as "houseexpo" in one row)
 };

@@ -17,9 +17,9 @@
 #include "roomscout/experiment/result_record.hpp"
 #include "roomscout/experiment/results_file.hpp"
 #include "roomscout/io/atomic_file.hpp"
-#include "roomscout/io/world_source.hpp"
 #include "roomscout/sim/start_pose.hpp"
 #include "roomscout/sim/world_model.hpp"
+#include "roomscout/sim/world_source.hpp"
 
 namespace roomscout::experiment {
 namespace fs = std::filesystem;
@@ -44,7 +44,7 @@ struct WorldSlot {
                                                  bool random_start, std::uint64_t seed) {
     const std::lock_guard<std::mutex> lock(mutex);
     if (!model) {
-      sim::World w = io::loadWorld(world->spec);
+      sim::World w = sim::loadWorld(world->spec);
       w.name = world->name;  // a world file is named by its stem in a bench
       model = std::make_shared<const sim::WorldModel>(w, options);
     }

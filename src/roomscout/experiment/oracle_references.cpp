@@ -12,10 +12,10 @@
 
 #include <nlohmann/json.hpp>
 
-#include "roomscout/io/world_source.hpp"
+#include "roomscout/experiment/oracle_tour.hpp"
 #include "roomscout/sim/episode.hpp"
-#include "roomscout/sim/oracle_tour.hpp"
 #include "roomscout/sim/world_model.hpp"
+#include "roomscout/sim/world_source.hpp"
 
 namespace roomscout::experiment {
 namespace {
@@ -53,7 +53,7 @@ OracleReference planFor(const std::string& spec, const std::string& setup) {
   if (!setup.empty()) applyOptions(config.groups(), nlohmann::json::parse(setup));
   config.resolve();
   config.validate();
-  sim::World world = io::loadWorld(spec);
+  sim::World world = sim::loadWorld(spec);
   if (!setup.empty()) {
     // A bench with random starts records each episode's start (see readWorldAndOptions).
     const nlohmann::json parsed = nlohmann::json::parse(setup);
@@ -64,7 +64,8 @@ OracleReference planFor(const std::string& spec, const std::string& setup) {
     }
   }
   const sim::WorldModel model(world, config.world);
-  const sim::OracleTour tour = sim::planOracleTour(model, sim::oracleTourOptionsFor(config));
+  const experiment::OracleTour tour =
+      experiment::planOracleTour(model, experiment::oracleTourOptionsFor(config));
   return {tour.length_m, tour.coverage, tour.viewpointCount()};
 }
 

@@ -22,10 +22,10 @@ struct OracleSummary {
 };
 
 /// Sets `oracle` of every episode whose world can be loaded again: its EpisodeSummary::
-/// world_spec through io::loadWorld (a relative path as seen from the current directory),
+/// world_spec through sim::loadWorld (a relative path as seen from the current directory),
 /// modelled and planned with the episode's own options (world_setup; defaults where the
 /// record has none, options the build does not know are ignored) and
-/// sim::oracleTourOptionsFor. Each distinct (world_spec, world_setup) is planned once;
+/// experiment::oracleTourOptionsFor. Each distinct (world_spec, world_setup) is planned once;
 /// several are planned in parallel. Deterministic. A world that does not load or plan leaves
 /// its episodes without an oracle and adds a note; nothing throws for a bad world.
 OracleSummary attachOracleTours(ResultSet& results, const OracleSettings& settings = {});

@@ -4,13 +4,13 @@
 
 #include <Eigen/Core>
 
+#include "roomscout/experiment/analysis_maps_output.hpp"
+#include "roomscout/experiment/run_outputs.hpp"
 #include "roomscout/explorer/explorer.hpp"
-#include "roomscout/io/analysis_maps_output.hpp"
 #include "roomscout/io/atomic_file.hpp"
 #include "roomscout/io/options_yaml.hpp"
 #include "roomscout/io/pcd_io.hpp"
 #include "roomscout/io/point_cloud_render.hpp"
-#include "roomscout/io/run_outputs.hpp"
 #include "roomscout/sim/point_cloud_observer.hpp"
 
 namespace roomscout::experiment {
@@ -44,7 +44,8 @@ RecordedEpisode runRecordedEpisode(const sim::WorldModel& model, EpisodeSetup& s
   const sim::EpisodeResult& result = recorded.result;
 
   const sim::World& world = model.world();
-  io::RunInfo info{world.name, world.source, setup.method, setup.seed, setup.optionsJson(), {}};
+  experiment::RunInfo info{world.name, world.source,        setup.method,
+                           setup.seed, setup.optionsJson(), {}};
   {
     // The point cloud map, in the frame of occupancy.yaml; written before metrics.json.
     const std::vector<Eigen::Vector3f> points = cloud.map().points();
@@ -66,11 +67,11 @@ RecordedEpisode runRecordedEpisode(const sim::WorldModel& model, EpisodeSetup& s
     record["keyframes"] = cloud.keyframes();
     record["built"] = cloud.description();
   }
-  const nlohmann::json analysis_maps = io::writeAnalysisMaps(
+  const nlohmann::json analysis_maps = experiment::writeAnalysisMaps(
       directory, *explorer.roomMap(), *explorer.skeletonMap(), result.map, &model);
   for (const auto& [name, summary] : analysis_maps.items()) info.maps[name] = summary;
-  io::writeRunOutputs(directory, info, result);
-  recorded.metrics = io::metricsJson(info, result);
+  experiment::writeRunOutputs(directory, info, result);
+  recorded.metrics = experiment::metricsJson(info, result);
 
   for (const char* name : kOutputFiles) {
     std::error_code ec;

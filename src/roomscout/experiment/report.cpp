@@ -13,7 +13,7 @@
 #include "roomscout/experiment/result_record.hpp"
 #include "roomscout/experiment/results_file.hpp"
 #include "roomscout/io/atomic_file.hpp"
-#include "roomscout/io/builtin_worlds.hpp"
+#include "roomscout/sim/builtin_worlds.hpp"
 
 namespace roomscout::experiment {
 namespace fs = std::filesystem;
@@ -135,7 +135,7 @@ void readWorldAndOptions(const nlohmann::json& record, const std::string& where,
     const std::string source = record["world_source"].get<std::string>();
     const std::string builtin = "builtin:";
     e.world_spec = source.rfind(builtin, 0) == 0 ? source.substr(builtin.size()) : source;
-  } else if (e.world_group == "builtin" && io::isBuiltinWorld(e.key.world)) {
+  } else if (e.world_group == "builtin" && sim::isBuiltinWorld(e.key.world)) {
     e.world_spec = e.key.world;
   }
   nlohmann::json setup = nlohmann::json::object();
@@ -346,7 +346,7 @@ EpisodeSummary summarizeRecord(const nlohmann::json& record, const std::string& 
       throw InputError(where, "'world_group' must be a string");
     e.world_group = record["world_group"].get<std::string>();
   } else {
-    e.world_group = io::isBuiltinWorld(e.key.world) ? "builtin" : "other";
+    e.world_group = sim::isBuiltinWorld(e.key.world) ? "builtin" : "other";
   }
   const std::optional<double> rate = optionalNumber(record, "exploration_rate", where);
   if (!rate) throw InputError(where, "record has no 'exploration_rate' (a number)");

@@ -56,7 +56,7 @@ struct EpisodeSummary {
   std::optional<double> revisits_98;      ///< revisits up to T98 (none in older records)
   std::map<std::string, MapSample> maps;  ///< by map type (record's map_stats)
   std::string where;                      ///< "file:line" of the record
-  /// What io::loadWorld takes to load the world again: a built-in name, or the world file as
+  /// What sim::loadWorld takes to load the world again: a built-in name, or the world file as
   /// the bench was given it (a relative path is relative to where the bench ran). From the
   /// record's world_source ("builtin:NAME" or a path); for records without one, the world's
   /// name when it is a built-in world; else empty.

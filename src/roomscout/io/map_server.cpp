@@ -49,18 +49,6 @@ std::optional<cv::Size> headerSize(const std::filesystem::path& path) {
   return imageHeaderSize(head);
 }
 
-/// Refuses a map image larger than kMaxGridCells, from its header when it has a size there
-/// (before reading the whole file), else after decoding it; then reads it.
-cv::Mat readMapImage(const std::filesystem::path& yaml_path, const MapServerMetadata& m) {
-  const auto check = [&](cv::Size size) {
-    checkGridSize(yaml_path.string(), "map", size.width, size.height, m.resolution_m);
-  };
-  if (const std::optional<cv::Size> size = headerSize(m.image)) check(*size);
-  cv::Mat image = readImage(m.image);
-  check(image.size());
-  return image;
-}
-
 template <typename T>
 void classifyPixels(const cv::Mat& image, const MapServerMetadata& m, cv::Mat& out) {
   const int channels = image.channels();
@@ -220,58 +208,32 @@ cv::Mat classifyMapImage(const cv::Mat& image, const MapServerMetadata& metadata
   return states;
 }
 
-sim::World loadImageWorld(const std::filesystem::path& yaml_path,
-                          const std::optional<std::filesystem::path>& room_labels_png) {
-  const MapServerMetadata m = loadMapServerYaml(yaml_path);
-  const cv::Mat image = readMapImage(yaml_path, m);
-  const cv::Mat states = classifyMapImage(image, m);
+cv::Mat readMapImage(const std::filesystem::path& yaml_path, const MapServerMetadata& m) {
+  const auto check = [&](cv::Size size) {
+    checkGridSize(yaml_path.string(), "map", size.width, size.height, m.resolution_m);
+  };
+  if (const std::optional<cv::Size> size = headerSize(m.image)) check(*size);
+  cv::Mat image = readImage(m.image);
+  check(image.size());
+  return image;
+}
 
-  sim::ImageWorld image_world;
-  image_world.resolution_m = m.resolution_m;
-  image_world.origin_m = m.origin_m;
-  image_world.solid = cv::Mat(states.rows, states.cols, CV_8U);
-  int free_pixels = 0;
-  for (int row = 0; row < states.rows; ++row) {
-    const std::uint8_t* state = states.ptr<std::uint8_t>(row);
-    std::uint8_t* solid = image_world.solid.ptr<std::uint8_t>(row);
-    for (int col = 0; col < states.cols; ++col) {
-      const bool is_free = state[col] == static_cast<std::uint8_t>(CellState::kFree);
-      solid[col] = is_free ? 0 : 255;
-      free_pixels += is_free ? 1 : 0;
+RoomLabelImage readRoomLabelImage(const std::filesystem::path& path, cv::Size map_size) {
+  const auto check_size = [&](cv::Size size) {
+    if (size != map_size) {
+      throw InputError(path.string(),
+                       "room label image is " + std::to_string(size.width) + "x" +
+                           std::to_string(size.height) + " pixels but the map image is " +
+                           std::to_string(map_size.width) + "x" + std::to_string(map_size.height));
     }
-  }
-  if (free_pixels == 0) {
-    throw InputError(m.image.string(), "no free pixel (nothing is below free_thresh " +
-                                           formatDouble(m.free_thresh) +
-                                           "; is the image inverted? see 'negate')");
-  }
-
-  sim::World world;
-  world.name = yaml_path.stem().string();
-  world.source = yaml_path.string();
-  world.description = "map_server map " + m.image.filename().string();
-  world.start_given = false;
-
-  if (room_labels_png) {
-    const auto check_size = [&](cv::Size size) {
-      if (size != image.size()) {
-        throw InputError(room_labels_png->string(),
-                         "room label image is " + std::to_string(size.width) + "x" +
-                             std::to_string(size.height) + " pixels but the map image is " +
-                             std::to_string(image.cols) + "x" + std::to_string(image.rows));
-      }
-    };
-    if (const std::optional<cv::Size> size = headerSize(*room_labels_png)) check_size(*size);
-    const cv::Mat labels_image = readImage(*room_labels_png);
-    check_size(labels_image.size());
-    std::vector<int> ids;
-    image_world.room_labels = labels_image.depth() == CV_8U
-                                  ? labelRooms<std::uint8_t>(labels_image, ids)
-                                  : labelRooms<std::uint16_t>(labels_image, ids);
-    for (int id : ids) world.rooms.push_back({id, "room_" + std::to_string(id), {}});
-  }
-  world.image = std::move(image_world);
-  return world;
+  };
+  if (const std::optional<cv::Size> size = headerSize(path)) check_size(*size);
+  const cv::Mat image = readImage(path);
+  check_size(image.size());
+  RoomLabelImage out;
+  out.labels = image.depth() == CV_8U ? labelRooms<std::uint8_t>(image, out.ids)
+                                      : labelRooms<std::uint16_t>(image, out.ids);
+  return out;
 }
 
 OccupancyGrid loadOccupancyMap(const std::filesystem::path& yaml_path) {

@@ -1,16 +1,16 @@
 #pragma once
-// ROS map_server maps (a YAML file next to a PGM/PNG image): read as simulator worlds or as
-// occupancy grids, and write occupancy grids in the same format.
+// ROS map_server maps (a YAML file next to a PGM/PNG image): read as occupancy grids (or as the
+// classified image a simulator world is made from), and write occupancy grids in the same format.
 
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <opencv2/core/mat.hpp>
 
 #include "roomscout/core/geometry.hpp"
 #include "roomscout/core/occupancy_grid.hpp"
-#include "roomscout/sim/world.hpp"
 
 namespace roomscout::io {
 
@@ -40,20 +40,27 @@ MapServerMetadata loadMapServerYaml(const std::filesystem::path& yaml_path);
 /// Accepts 8- or 16-bit images with 1 to 4 channels; throws InvalidArgument otherwise.
 cv::Mat classifyMapImage(const cv::Mat& image, const MapServerMetadata& metadata);
 
-/// Loads a map_server map as a simulator world: ImageWorld.solid is 255 wherever the map is
-/// not free. The world's name is the YAML's stem, its source the YAML's path; no start pose.
-/// `room_labels_png`, when given, labels rooms: an image of the map's size, either 8/16-bit
-/// greyscale (0 = no room, k = room k) or colour (each distinct colour other than black and
-/// white is a room, numbered 1, 2, ... in order of first appearance in a row-major scan).
-/// Throws InputError naming the file for unreadable or corrupt images, a map with no free
-/// pixel, a label image of another size, or an image of more than kMaxGridCells pixels (read
-/// from a PNG or PGM header before the image is loaded; core/grid_limits.hpp).
-sim::World loadImageWorld(const std::filesystem::path& yaml_path,
-                          const std::optional<std::filesystem::path>& room_labels_png);
+/// Reads the image `metadata` names (8- or 16-bit, 1 to 4 channels, as stored). Throws
+/// InputError naming the file for an unreadable or corrupt image, or naming `yaml_path` for an
+/// image of more than kMaxGridCells pixels (read from a PNG or PGM header before the image is
+/// decoded; core/grid_limits.hpp).
+cv::Mat readMapImage(const std::filesystem::path& yaml_path, const MapServerMetadata& metadata);
+
+/// A room label image read as room ids.
+struct RoomLabelImage {
+  cv::Mat labels;        ///< CV_32S, the image's size: 0 = no room, k = room k
+  std::vector<int> ids;  ///< the ids present, in order of their numbering
+};
+
+/// Reads a room label image for a map of `map_size` pixels: either 8/16-bit greyscale (0 = no
+/// room, k = room k) or colour (each distinct colour other than black and white is a room,
+/// numbered 1, 2, ... in order of first appearance in a row-major scan). Throws InputError
+/// naming the file for an unreadable or corrupt image or one of another size.
+RoomLabelImage readRoomLabelImage(const std::filesystem::path& path, cv::Size map_size);
 
 /// Loads a map_server map as an OccupancyGrid (cell states set from the classification,
 /// geometry from resolution and origin). Map cell (x, y) is pixel (x, height - 1 - y).
-/// Refuses images larger than kMaxGridCells as loadImageWorld does.
+/// Refuses images larger than kMaxGridCells as readMapImage does.
 OccupancyGrid loadOccupancyMap(const std::filesystem::path& yaml_path);
 
 /// Writes `grid` as NAME.pgm (binary P5: 254 free, 0 occupied, 205 unknown, first row = top)

@@ -1,14 +1,17 @@
-#include "roomscout/io/world_source.hpp"
+#include "roomscout/sim/world_source.hpp"
 
 #include <yaml-cpp/yaml.h>
 
 #include "roomscout/core/errors.hpp"
 #include "roomscout/io/atomic_file.hpp"
-#include "roomscout/io/builtin_worlds.hpp"
 #include "roomscout/io/map_server.hpp"
-#include "roomscout/io/world_file.hpp"
+#include "roomscout/sim/builtin_worlds.hpp"
+#include "roomscout/sim/image_world.hpp"
+#include "roomscout/sim/world_file.hpp"
 
-namespace roomscout::io {
+namespace roomscout::sim {
+
+using io::readFile;
 
 sim::World loadWorld(const std::string& spec,
                      const std::optional<std::filesystem::path>& room_labels_png) {
@@ -30,9 +33,9 @@ sim::World loadWorld(const std::string& spec,
   } catch (const YAML::Exception&) {
     // Not YAML at all: let the world-file reader report the syntax error with its line.
   }
-  if (is_map_server) return loadImageWorld(path, room_labels_png);
+  if (is_map_server) return sim::loadImageWorld(path, room_labels_png);
   if (room_labels_png) throw InputError(spec, "--room-labels applies only to map_server worlds");
   return parseWorldYaml(text, path.string());
 }
 
-}  // namespace roomscout::io
+}  // namespace roomscout::sim

@@ -7,7 +7,7 @@
 
 #include "roomscout/sim/world.hpp"
 
-namespace roomscout::io {
+namespace roomscout::sim {
 
 /// Loads a world from `spec`: the name of a built-in world, a world YAML file
 /// (docs/world_format.md), or a map_server YAML (recognised by its `image` key), the last with
@@ -15,4 +15,4 @@ namespace roomscout::io {
 sim::World loadWorld(const std::string& spec,
                      const std::optional<std::filesystem::path>& room_labels_png = std::nullopt);
 
-}  // namespace roomscout::io
+}  // namespace roomscout::sim

@@ -10,7 +10,7 @@
 
 #include "roomscout/sim/episode.hpp"
 
-namespace roomscout::io {
+namespace roomscout::experiment {
 
 /// Everything a run record holds besides the episode's own result.
 struct RunInfo {
@@ -35,4 +35,4 @@ cv::Mat renderRun(const sim::EpisodeResult& result);
 void writeRunOutputs(const std::filesystem::path& directory, const RunInfo& info,
                      const sim::EpisodeResult& result);
 
-}  // namespace roomscout::io
+}  // namespace roomscout::experiment

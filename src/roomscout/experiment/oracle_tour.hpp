@@ -14,8 +14,10 @@
 #include "roomscout/sim/world_model.hpp"
 
 namespace roomscout::sim {
-
 struct EpisodeConfig;
+}  // namespace roomscout::sim
+
+namespace roomscout::experiment {
 
 /// Its fields are documented in parameters(); no config group sets them (see
 /// oracleTourOptionsFor()), so `roomscout options` does not print them.
@@ -36,7 +38,7 @@ struct OracleTourOptions {
 
 /// The oracle options matching an episode's: map resolution, the costmap's lethal radius (with
 /// the robot group's radius) and the laser's range.
-OracleTourOptions oracleTourOptionsFor(const EpisodeConfig& config);
+OracleTourOptions oracleTourOptionsFor(const sim::EpisodeConfig& config);
 
 struct OracleTour {
   double length_m = 0.0;              ///< open tour: start, then every viewpoint in order [m]
@@ -55,6 +57,6 @@ struct OracleTour {
 /// the lower cell index). When the target coverage cannot be reached (space visible only from
 /// places the robot cannot go) the tour covers what it can and `coverage` says how much.
 /// Throws OptionError when `options` are invalid.
-OracleTour planOracleTour(const WorldModel& world, const OracleTourOptions& options = {});
+OracleTour planOracleTour(const sim::WorldModel& world, const OracleTourOptions& options = {});
 
-}  // namespace roomscout::sim
+}  // namespace roomscout::experiment

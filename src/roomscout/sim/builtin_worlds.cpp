@@ -1,10 +1,12 @@
-#include "roomscout/io/builtin_worlds.hpp"
+#include "roomscout/sim/builtin_worlds.hpp"
 
 #include "roomscout/core/errors.hpp"
-#include "roomscout/io/world_file.hpp"
 #include "roomscout/io/yaml_support.hpp"
+#include "roomscout/sim/world_file.hpp"
 
-namespace roomscout::io {
+namespace roomscout::sim {
+
+using io::joinNames;
 
 std::vector<std::string> builtinWorldNames() {
   std::vector<std::string> names;
@@ -28,4 +30,4 @@ sim::World loadBuiltinWorld(std::string_view name) {
                    "no such built-in world (known: " + joinNames(builtinWorldNames()) + ")");
 }
 
-}  // namespace roomscout::io
+}  // namespace roomscout::sim

@@ -1,4 +1,4 @@
-#include "roomscout/io/run_outputs.hpp"
+#include "roomscout/experiment/run_outputs.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -9,7 +9,7 @@
 #include "roomscout/io/atomic_file.hpp"
 #include "roomscout/io/map_server.hpp"
 
-namespace roomscout::io {
+namespace roomscout::experiment {
 namespace {
 
 nlohmann::json optionalNumber(const std::optional<double>& v) {
@@ -134,12 +134,12 @@ cv::Mat renderRun(const sim::EpisodeResult& result) {
 
 void writeRunOutputs(const std::filesystem::path& directory, const RunInfo& info,
                      const sim::EpisodeResult& result) {
-  ensureWritableDirectory(directory);
-  saveOccupancyMap(result.map, directory / "occupancy.yaml");
-  writeFileAtomic(directory / "trajectory.csv", trajectoryCsv(result));
-  writeImageAtomic(directory / "run.png", renderRun(result));
+  io::ensureWritableDirectory(directory);
+  io::saveOccupancyMap(result.map, directory / "occupancy.yaml");
+  io::writeFileAtomic(directory / "trajectory.csv", trajectoryCsv(result));
+  io::writeImageAtomic(directory / "run.png", renderRun(result));
   // metrics.json last: its presence says the run's outputs are complete.
-  writeFileAtomic(directory / "metrics.json", metricsJson(info, result).dump(2) + "\n");
+  io::writeFileAtomic(directory / "metrics.json", metricsJson(info, result).dump(2) + "\n");
 }
 
-}  // namespace roomscout::io
+}  // namespace roomscout::experiment

@@ -10,7 +10,7 @@
 #include "roomscout/explorer/analysis_maps.hpp"
 #include "roomscout/sim/world_model.hpp"
 
-namespace roomscout::io {
+namespace roomscout::experiment {
 
 /// The world's ground-truth room of every free cell of `grid` (CV_32S, row y = grid row y,
 /// 0 = none), for scoring a segmentation of that grid.
@@ -24,4 +24,4 @@ nlohmann::json writeAnalysisMaps(const std::filesystem::path& directory,
                                  const AnalysisMap& semantic, const AnalysisMap& topological,
                                  const OccupancyGrid& grid, const sim::WorldModel* world);
 
-}  // namespace roomscout::io
+}  // namespace roomscout::experiment

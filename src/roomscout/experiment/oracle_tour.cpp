@@ -1,4 +1,4 @@
-#include "roomscout/sim/oracle_tour.hpp"
+#include "roomscout/experiment/oracle_tour.hpp"
 
 #include <algorithm>
 #include <array>
@@ -15,7 +15,11 @@
 #include "roomscout/sim/episode.hpp"
 #include "roomscout/sim/exploration_truth.hpp"
 
-namespace roomscout::sim {
+namespace roomscout::experiment {
+
+using sim::EpisodeConfig;
+using sim::ExplorationTruth;
+using sim::WorldModel;
 
 void OracleTourOptions::validate() const {
   const auto positive = [](double v) { return std::isfinite(v) && v > 0.0; };
@@ -723,4 +727,4 @@ OracleTour planOracleTour(const WorldModel& world, const OracleTourOptions& opti
   return tour;
 }
 
-}  // namespace roomscout::sim
+}  // namespace roomscout::experiment

@@ -7,7 +7,7 @@
 
 #include "roomscout/sim/world.hpp"
 
-namespace roomscout::io {
+namespace roomscout::sim {
 
 /// One embedded world file: its stem and its YAML text.
 struct EmbeddedWorld {
@@ -29,4 +29,4 @@ bool isBuiltinWorld(std::string_view name);
 /// names when `name` is not built in.
 sim::World loadBuiltinWorld(std::string_view name);
 
-}  // namespace roomscout::io
+}  // namespace roomscout::sim

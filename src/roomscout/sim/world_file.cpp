@@ -1,4 +1,4 @@
-#include "roomscout/io/world_file.hpp"
+#include "roomscout/sim/world_file.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -12,7 +12,14 @@
 #include "roomscout/io/atomic_file.hpp"
 #include "roomscout/io/yaml_support.hpp"
 
-namespace roomscout::io {
+namespace roomscout::sim {
+
+using io::describeYamlNode;
+using io::formatDouble;
+using io::joinNames;
+using io::parseYaml;
+using io::readFile;
+using io::yamlDouble;
 namespace {
 
 constexpr double kDoorTouchTolerance_m = 1e-6;
@@ -467,4 +474,4 @@ sim::World loadWorldFile(const std::filesystem::path& path) {
   return parseWorldYaml(readFile(path), path.string());
 }
 
-}  // namespace roomscout::io
+}  // namespace roomscout::sim

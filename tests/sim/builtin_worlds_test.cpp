@@ -1,17 +1,17 @@
-#include "roomscout/io/builtin_worlds.hpp"
+#include "roomscout/sim/builtin_worlds.hpp"
 
 #include <algorithm>
 #include <string>
 
 #include <gtest/gtest.h>
 
+#include "../io/test_support.hpp"
 #include "roomscout/core/errors.hpp"
-#include "test_support.hpp"
 
-namespace roomscout::io {
+namespace roomscout::sim {
 namespace {
 
-using test::Contains;
+using io::test::Contains;
 
 TEST(BuiltinWorlds, NamesMatchTheEmbeddedFilesAndAreSorted) {
   const std::vector<std::string> names = builtinWorldNames();
@@ -47,4 +47,4 @@ TEST(BuiltinWorlds, UnknownNameListsTheKnownOnes) {
 }
 
 }  // namespace
-}  // namespace roomscout::io
+}  // namespace roomscout::sim

@@ -8,7 +8,7 @@
 
 #include "roomscout/sim/world.hpp"
 
-namespace roomscout::io {
+namespace roomscout::sim {
 
 /// Thickness of a `kind: table` top [m].
 inline constexpr double kTableTopThickness_m = 0.04;
@@ -28,4 +28,4 @@ sim::World parseWorldYaml(std::string_view yaml_text, const std::string& source)
 /// Reads and parses a world file; errors name the file's path.
 sim::World loadWorldFile(const std::filesystem::path& path);
 
-}  // namespace roomscout::io
+}  // namespace roomscout::sim

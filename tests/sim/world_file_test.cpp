@@ -1,4 +1,4 @@
-#include "roomscout/io/world_file.hpp"
+#include "roomscout/sim/world_file.hpp"
 
 #include <cmath>
 #include <ostream>
@@ -7,14 +7,14 @@
 
 #include <gtest/gtest.h>
 
+#include "../io/test_support.hpp"
 #include "roomscout/core/errors.hpp"
-#include "test_support.hpp"
 
-namespace roomscout::io {
+namespace roomscout::sim {
 namespace {
 
-using test::Contains;
-using test::TempDir;
+using io::test::Contains;
+using io::test::TempDir;
 
 constexpr double kEps = 1e-9;
 constexpr const char* kSource = "mem:test_world.yaml";
@@ -251,9 +251,9 @@ TEST(LoadWorldFile, ReadsFileAndNamesItInErrors) {
   EXPECT_EQ(w.walls.size(), 4u);
 
   const auto bad = dir.write("bad.yaml", "name: bad\nstart: [0, 0, 0]\nwals: []\n");
-  const std::string message = test::messageOf<InputError>([&] { loadWorldFile(bad); });
+  const std::string message = io::test::messageOf<InputError>([&] { loadWorldFile(bad); });
   EXPECT_TRUE(Contains(message, bad.string() + ": unknown key 'wals'"));
-  EXPECT_TRUE(Contains(test::messageOf<InputError>([&] { loadWorldFile(dir / "none.yaml"); }),
+  EXPECT_TRUE(Contains(io::test::messageOf<InputError>([&] { loadWorldFile(dir / "none.yaml"); }),
                        (dir / "none.yaml").string() + ": file not found"));
 }
 
@@ -429,4 +429,4 @@ TEST(ParseWorldYaml, MalformedYamlReportsTheLine) {
 }
 
 }  // namespace
-}  // namespace roomscout::io
+}  // namespace roomscout::sim

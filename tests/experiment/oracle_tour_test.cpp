@@ -1,4 +1,4 @@
-#include "roomscout/sim/oracle_tour.hpp"
+#include "roomscout/experiment/oracle_tour.hpp"
 
 #include <gtest/gtest.h>
 
@@ -6,10 +6,15 @@
 
 #include "roomscout/core/errors.hpp"
 #include "roomscout/sim/episode.hpp"
-#include "test_worlds.hpp"
 
-namespace roomscout::sim {
+#include "../sim/test_worlds.hpp"
+
+namespace roomscout::experiment {
 namespace {
+
+using sim::EpisodeConfig;
+using sim::WorldModel;
+namespace testing = sim::testing;
 
 double polylineLength(const std::vector<Vec2>& points) {
   double length = 0.0;
@@ -134,4 +139,4 @@ TEST(OracleTour, RejectsInvalidOptions) {
 }
 
 }  // namespace
-}  // namespace roomscout::sim
+}  // namespace roomscout::experiment

@@ -1,10 +1,10 @@
-#include "roomscout/io/analysis_maps_output.hpp"
+#include "roomscout/experiment/analysis_maps_output.hpp"
 
 #include "roomscout/io/semantic_io.hpp"
 #include "roomscout/io/topology_io.hpp"
 #include "roomscout/maps/segmentation_score.hpp"
 
-namespace roomscout::io {
+namespace roomscout::experiment {
 
 cv::Mat groundTruthRoomLabels(const OccupancyGrid& grid, const sim::WorldModel& world) {
   const GridGeometry& g = grid.geometry();
@@ -45,9 +45,9 @@ nlohmann::json writeAnalysisMaps(const std::filesystem::path& directory,
                                    {"iou", s.iou}};
     summary["semantic"]["ground_truth_score"] = extra["ground_truth_score"];
   }
-  writeTopologicalMap(directory, topo, grid);
-  writeSemanticMap(directory, rooms, grid, extra);
+  io::writeTopologicalMap(directory, topo, grid);
+  io::writeSemanticMap(directory, rooms, grid, extra);
   return summary;
 }
 
-}  // namespace roomscout::io
+}  // namespace roomscout::experiment
