@@ -57,6 +57,10 @@ class ExplorationStrategy {
   virtual void onGoalReached(const Vec2& /*goal_m*/) {}
   /// The robot could not reach the goal (no path, no progress, or stuck).
   virtual void onGoalFailed(const Vec2& /*goal_m*/) {}
+  /// The runner's stall watchdog gave up on the goal: the robot dithered in one place, seeing
+  /// nothing new, while decisions flipped between goals. The goal may well be reachable; by
+  /// default this counts as a failure all the same.
+  virtual void onGoalStalled(const Vec2& goal_m) { onGoalFailed(goal_m); }
   /// Seconds between decisions while a goal is active; 0 means only on events.
   virtual double replanPeriod_s() const { return 0.0; }
   /// True when decide() reads ExplorationInput::semantic. Only then does a runner hand it the

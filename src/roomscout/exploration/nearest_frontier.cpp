@@ -66,9 +66,11 @@ namespace {
 /// In both cases members on the blacklist are passed over, so that one failed spot does not
 /// drop a whole frontier (a ring around the robot is often a single frontier).
 /// A centroid the robot failed to reach (`failed`) drops the frontier, as in explore_lite. One
-/// the progress watchdog gave up on (`slow`) gives way to the traversable member nearest to it:
-/// the watchdog measures progress as the straight-line distance to the frontier, so it also
-/// gives up on goals whose path first leads away from them, round a wall.
+/// a watchdog gave up on (`slow`) gives way to the traversable member nearest to it: the
+/// progress watchdog measures progress as the straight-line distance to the frontier, so it
+/// also gives up on goals whose path first leads away from them, round a wall; and the
+/// runner's stall watchdog gives up on whichever goal is current when two frontiers, ranked
+/// by that distance, take turns as the goal while the robot dithers between them.
 template <typename Failed, typename Slow>
 std::optional<Vec2> traversableTarget(const Frontier& f, const Costmap& costmap, const Vec2& robot,
                                       double max_centroid_offset_m, Failed&& failed, Slow&& slow) {

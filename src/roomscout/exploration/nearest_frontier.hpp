@@ -32,6 +32,8 @@ class NearestFrontier final : public ExplorationStrategy {
   std::string_view name() const override { return "nearest_frontier"; }
   Decision decide(const ExplorationInput& input) override;
   void onGoalFailed(const Vec2& goal_m) override { failed_.push_back(goal_m); }
+  /// A stalled goal is given up as the progress watchdog gives one up: its frontier stays.
+  void onGoalStalled(const Vec2& goal_m) override { slow_.push_back(goal_m); }
   double replanPeriod_s() const override { return options_.planner_period_s; }
   std::vector<ParameterRef> parameters() override { return options_.parameters(); }
   void validateOptions() const override { options_.validate(); }
@@ -42,7 +44,7 @@ class NearestFrontier final : public ExplorationStrategy {
 
   NearestFrontierOptions options_;
   std::vector<Vec2> failed_;  ///< goals the robot failed to reach (explore_lite's blacklist)
-  std::vector<Vec2> slow_;    ///< goals the progress watchdog gave up on
+  std::vector<Vec2> slow_;    ///< goals the progress or stall watchdog gave up on
   bool has_previous_ = false;
   Vec2 previous_goal_m_ = Vec2::Zero();
   double previous_distance_m_ = 0.0;

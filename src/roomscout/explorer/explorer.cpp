@@ -153,8 +153,8 @@ double Explorer::relative(double time_s, const char* what) const {
   return t;
 }
 
-void Explorer::failGoal() {
-  if (goal_) strategy_->onGoalFailed(*goal_);
+void Explorer::failGoal(bool stalled) {
+  if (goal_) stalled ? strategy_->onGoalStalled(*goal_) : strategy_->onGoalFailed(*goal_);
   ++stats_.goal_failures;
   goal_.reset();
   progress_.reset(Path{});
@@ -204,7 +204,7 @@ void Explorer::stallWatchdog(const OccupancyGrid& grid, const Vec2& robot, doubl
   if (goal_ && free_now_m2 - stall_window_free_m2_ < options_.goals.stall_min_new_area_m2 &&
       stall_window_excursion_m_ < options_.goals.stall_radius_m) {
     ++stats_.stalls;
-    failGoal();
+    failGoal(/*stalled=*/true);
   }
   stall_window_start_s_ = t;
   stall_window_free_m2_ = free_now_m2;

@@ -148,7 +148,8 @@ class Explorer {
   const AnalysisMap* skeletonMap() const { return skeleton_.get(); }
 
  private:
-  void failGoal();
+  /// Reports the goal failed (or, from the stall watchdog, stalled) and drops it.
+  void failGoal(bool stalled = false);
   void applyPendingFailure();
   bool planTo(const Vec2& robot, const Vec2& target, double t);
   void refreshCostmap(const OccupancyGrid& grid);
