@@ -32,7 +32,7 @@
 
 #include "roomscout/core/errors.hpp"
 #include "roomscout/experiment/episode_setup.hpp"
-#include "roomscout/exploration/frontier_cells.hpp"
+#include "roomscout/exploration/detail/frontier_cells.hpp"
 #include "roomscout/explorer/explorer.hpp"
 #include "roomscout/mapping/keyframe_selector.hpp"
 #include "roomscout/mapping/point_cloud_map.hpp"

@@ -52,7 +52,7 @@
 #include "roomscout/mapping/occupancy_mapper.hpp"
 #include "roomscout/planning/astar_planner.hpp"
 #include "roomscout/planning/costmap.hpp"
-#include "roomscout/planning/path_blocking.hpp"
+#include "roomscout/planning/detail/path_blocking.hpp"
 #include "roomscout/planning/path_follower.hpp"
 #include "roomscout/sim/column_world.hpp"
 #include "roomscout/sim/episode.hpp"

@@ -12,11 +12,11 @@
 #include <set>
 
 #include "../maps/synthetic_maps.hpp"
-#include "roomscout/core/grid_remap.hpp"
-#include "roomscout/exploration/improved_rrt.hpp"
-#include "roomscout/exploration/rrt_exploration.hpp"
-#include "roomscout/exploration/rrt_tree.hpp"
-#include "roomscout/exploration/semantic_explorer.hpp"
+#include "roomscout/core/detail/grid_remap.hpp"
+#include "roomscout/exploration/detail/improved_rrt.hpp"
+#include "roomscout/exploration/detail/rrt_exploration.hpp"
+#include "roomscout/exploration/detail/rrt_tree.hpp"
+#include "roomscout/exploration/detail/semantic_explorer.hpp"
 #include "roomscout/exploration/strategy_registry.hpp"
 #include "roomscout/maps/grid_image.hpp"
 #include "roomscout/maps/room_segmenter.hpp"

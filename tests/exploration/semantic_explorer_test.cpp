@@ -1,7 +1,7 @@
 // The paper's semantic-region-aware strategy: its sampling law, where P_sem comes from, the
 // sign of the room reward, and the behaviour it exists for (finish the room you are in).
 
-#include "roomscout/exploration/semantic_explorer.hpp"
+#include "roomscout/exploration/detail/semantic_explorer.hpp"
 
 #include <gtest/gtest.h>
 

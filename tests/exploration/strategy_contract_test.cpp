@@ -7,7 +7,7 @@
 #include <cstdint>
 
 #include "../sim/test_worlds.hpp"
-#include "roomscout/exploration/rrt_tree.hpp"
+#include "roomscout/exploration/detail/rrt_tree.hpp"
 #include "roomscout/exploration/strategy_registry.hpp"
 #include "roomscout/sim/episode.hpp"
 #include "roomscout/sim/exploration_truth.hpp"

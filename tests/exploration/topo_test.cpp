@@ -8,7 +8,7 @@
 
 #include "../sim/test_worlds.hpp"
 #include "roomscout/core/errors.hpp"
-#include "roomscout/exploration/topo_exploration.hpp"
+#include "roomscout/exploration/detail/topo_exploration.hpp"
 #include "roomscout/sim/episode.hpp"
 
 namespace roomscout {

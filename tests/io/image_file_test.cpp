@@ -1,7 +1,7 @@
 // Image files a user supplies: header sizes, and inputs that crashed the fuzz targets kept as
 // regressions (a header announcing a huge image must be an InputError naming the file, before
 // any pixel memory is allocated and without OpenCV's own exceptions escaping).
-#include "roomscout/io/image_file.hpp"
+#include "roomscout/io/detail/image_file.hpp"
 
 #include <string>
 

@@ -1,6 +1,6 @@
 // Components found on runs against cv::connectedComponentsWithStats.
 
-#include "roomscout/maps/run_components.hpp"
+#include "roomscout/maps/detail/run_components.hpp"
 
 #include <gtest/gtest.h>
 

@@ -9,9 +9,9 @@
 #include <opencv2/ximgproc.hpp>
 
 #include "roomscout/core/errors.hpp"
+#include "roomscout/maps/detail/thinning.hpp"
 #include "roomscout/maps/room_segmenter.hpp"
 #include "roomscout/maps/semantic_map.hpp"
-#include "roomscout/maps/thinning.hpp"
 #include "synthetic_maps.hpp"
 
 namespace roomscout {

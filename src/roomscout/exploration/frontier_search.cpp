@@ -1,4 +1,4 @@
-#include "roomscout/exploration/frontier_search.hpp"
+#include "roomscout/exploration/detail/frontier_search.hpp"
 
 #include <cmath>
 #include <limits>

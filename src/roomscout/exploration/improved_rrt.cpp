@@ -1,4 +1,4 @@
-#include "roomscout/exploration/improved_rrt.hpp"
+#include "roomscout/exploration/detail/improved_rrt.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +7,7 @@
 #include <limits>
 
 #include "roomscout/core/errors.hpp"
-#include "roomscout/exploration/frontier_cells.hpp"
+#include "roomscout/exploration/detail/frontier_cells.hpp"
 
 namespace roomscout {
 

@@ -1,4 +1,4 @@
-#include "roomscout/exploration/nearest_frontier.hpp"
+#include "roomscout/exploration/detail/nearest_frontier.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 #include <optional>
 
 #include "roomscout/core/errors.hpp"
-#include "roomscout/exploration/frontier_search.hpp"
+#include "roomscout/exploration/detail/frontier_search.hpp"
 
 namespace roomscout {
 

@@ -1,4 +1,4 @@
-#include "roomscout/exploration/rrt_tree.hpp"
+#include "roomscout/exploration/detail/rrt_tree.hpp"
 
 #include <algorithm>
 #include <cmath>

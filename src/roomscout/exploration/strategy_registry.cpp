@@ -1,12 +1,12 @@
 #include "roomscout/exploration/strategy_registry.hpp"
 
 #include "roomscout/core/errors.hpp"
-#include "roomscout/exploration/improved_rrt.hpp"
-#include "roomscout/exploration/mmpf.hpp"
-#include "roomscout/exploration/nearest_frontier.hpp"
-#include "roomscout/exploration/rrt_exploration.hpp"
-#include "roomscout/exploration/semantic_explorer.hpp"
-#include "roomscout/exploration/topo_exploration.hpp"
+#include "roomscout/exploration/detail/improved_rrt.hpp"
+#include "roomscout/exploration/detail/mmpf.hpp"
+#include "roomscout/exploration/detail/nearest_frontier.hpp"
+#include "roomscout/exploration/detail/rrt_exploration.hpp"
+#include "roomscout/exploration/detail/semantic_explorer.hpp"
+#include "roomscout/exploration/detail/topo_exploration.hpp"
 
 namespace roomscout {
 

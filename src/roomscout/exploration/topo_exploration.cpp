@@ -1,11 +1,11 @@
-#include "roomscout/exploration/topo_exploration.hpp"
+#include "roomscout/exploration/detail/topo_exploration.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
 #include "roomscout/core/errors.hpp"
-#include "roomscout/exploration/frontier_cells.hpp"
+#include "roomscout/exploration/detail/frontier_cells.hpp"
 
 namespace roomscout {
 

@@ -6,7 +6,7 @@
 #include <string>
 
 #include "roomscout/core/errors.hpp"
-#include "roomscout/planning/path_blocking.hpp"
+#include "roomscout/planning/detail/path_blocking.hpp"
 
 namespace roomscout {
 

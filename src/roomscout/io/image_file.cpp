@@ -1,4 +1,4 @@
-#include "roomscout/io/image_file.hpp"
+#include "roomscout/io/detail/image_file.hpp"
 
 #include <algorithm>
 #include <cctype>

@@ -16,8 +16,8 @@
 #include "roomscout/core/errors.hpp"
 #include "roomscout/core/grid_limits.hpp"
 #include "roomscout/io/atomic_file.hpp"
-#include "roomscout/io/image_file.hpp"
-#include "roomscout/io/yaml_support.hpp"
+#include "roomscout/io/detail/image_file.hpp"
+#include "roomscout/io/detail/yaml_support.hpp"
 
 namespace roomscout::io {
 namespace {

@@ -7,7 +7,7 @@
 
 #include "roomscout/core/errors.hpp"
 #include "roomscout/io/atomic_file.hpp"
-#include "roomscout/io/yaml_support.hpp"
+#include "roomscout/io/detail/yaml_support.hpp"
 
 namespace roomscout::io {
 namespace {

@@ -6,7 +6,7 @@
 
 #include "roomscout/core/errors.hpp"
 #include "roomscout/core/occupancy_grid.hpp"
-#include "roomscout/io/image_file.hpp"
+#include "roomscout/io/detail/image_file.hpp"
 
 namespace fs = std::filesystem;
 

@@ -5,7 +5,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "roomscout/core/errors.hpp"
-#include "roomscout/maps/run_components.hpp"
+#include "roomscout/maps/detail/run_components.hpp"
 
 namespace roomscout::maps {
 

@@ -1,4 +1,4 @@
-#include "roomscout/maps/run_components.hpp"
+#include "roomscout/maps/detail/run_components.hpp"
 
 #include <algorithm>
 

@@ -9,7 +9,7 @@
 
 #include "roomscout/core/errors.hpp"
 #include "roomscout/core/occupancy_grid.hpp"
-#include "roomscout/maps/run_components.hpp"
+#include "roomscout/maps/detail/run_components.hpp"
 
 namespace roomscout {
 

@@ -1,4 +1,4 @@
-#include "roomscout/maps/thinning.hpp"
+#include "roomscout/maps/detail/thinning.hpp"
 
 #include <array>
 #include <vector>

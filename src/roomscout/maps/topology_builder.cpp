@@ -6,10 +6,10 @@
 #include <opencv2/imgproc.hpp>
 
 #include "roomscout/core/errors.hpp"
+#include "roomscout/maps/detail/run_components.hpp"
+#include "roomscout/maps/detail/thinning.hpp"
 #include "roomscout/maps/grid_image.hpp"
-#include "roomscout/maps/run_components.hpp"
 #include "roomscout/maps/semantic_map.hpp"
-#include "roomscout/maps/thinning.hpp"
 
 namespace roomscout {
 namespace {

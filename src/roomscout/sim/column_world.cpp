@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "roomscout/sim/polygon_raster.hpp"
+#include "roomscout/sim/detail/polygon_raster.hpp"
 
 namespace roomscout::sim {
 

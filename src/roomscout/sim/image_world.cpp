@@ -6,8 +6,8 @@
 
 #include "roomscout/core/errors.hpp"
 #include "roomscout/core/occupancy_grid.hpp"
+#include "roomscout/io/detail/yaml_support.hpp"
 #include "roomscout/io/map_server.hpp"
-#include "roomscout/io/yaml_support.hpp"
 
 namespace roomscout::sim {
 

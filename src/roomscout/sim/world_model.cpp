@@ -9,7 +9,7 @@
 
 #include "roomscout/core/errors.hpp"
 #include "roomscout/core/grid_limits.hpp"
-#include "roomscout/sim/polygon_raster.hpp"
+#include "roomscout/sim/detail/polygon_raster.hpp"
 
 namespace roomscout::sim {
 
