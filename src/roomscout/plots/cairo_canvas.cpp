@@ -155,7 +155,11 @@ double textWidth(std::string_view text, const TextStyle& style) {
   selectFont(cr, style);
   cairo_text_extents_t extents;
   cairo_text_extents(cr, validUtf8(text).c_str(), &extents);
-  checkCairo(cairo_status(cr), "cannot measure text");
+  const cairo_status_t status = cairo_status(cr);
+  if (status != CAIRO_STATUS_SUCCESS) {
+    measure = TextMeasure();  // a Cairo context stays in error: the next call starts afresh
+    checkCairo(status, "cannot measure text");
+  }
   return extents.x_advance;
 }
 
