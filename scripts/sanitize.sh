@@ -20,6 +20,7 @@ cmake --build "$build_dir" -j "$(nproc)" --target "${binaries[@]}"
 
 export ASAN_OPTIONS="${ASAN_OPTIONS:-halt_on_error=1:detect_leaks=1:abort_on_error=1:symbolize=1}"
 export UBSAN_OPTIONS="${UBSAN_OPTIONS:-halt_on_error=1:print_stacktrace=1}"
+export LSAN_OPTIONS="${LSAN_OPTIONS:-suppressions=$PWD/scripts/lsan_suppressions.txt}"
 # The fast tests: every label but those that run whole exploration episodes, which take
 # minutes under ASan (sim, exploration, slam, cli: episodes of the built-in worlds, the SLAM
 # episodes and the command line driving them; dataset: episodes of real floor plans), and

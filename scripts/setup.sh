@@ -10,6 +10,9 @@ packages=(
   libeigen3-dev libopencv-dev libopencv-contrib-dev libpcl-dev libmrpt-slam-dev
   libyaml-cpp-dev nlohmann-json3-dev libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev clang-format
+  # report figures: Cairo draws them (PNG, SVG, PDF) in DejaVu Sans; the tests rasterise a
+  # figure's PDF with poppler's pdftoppm
+  libcairo2-dev fonts-dejavu-core poppler-utils
   # clang with its sanitizer and libFuzzer runtimes (only recommended by clang, so named) for
   # scripts/sanitize.sh and scripts/fuzz.sh
   clang libclang-rt-14-dev
@@ -21,7 +24,7 @@ packages=(
 # The browser tests open report pages in headless Chromium: a large package (about 120 MB
 # to download, 410 MB installed), so only when asked for.
 if [ "${ROOMSCOUT_BROWSER_TESTS:-0}" = 1 ]; then
-  packages+=(chromium fonts-dejavu-core)
+  packages+=(chromium)
 fi
 
 missing=()

@@ -139,7 +139,8 @@ TEST_F(BenchCliTest, JobsDoNotChangeResultsAndSeedOneKeepsItsOutputs) {
   for (const char* f :
        {"table1.md", "table1.csv", "table2.md", "table3.md", "report.html",
         "figures/fig5_rate_small_house.png", "figures/fig6_trajectories_small_house.svg",
-        "figures/fig7_maps_small_house.png", "figures/fig5_rate_rooms.svg", "figures/revisits.png"})
+        "figures/fig7_maps_small_house.png", "figures/fig7_maps_small_house.pdf",
+        "figures/fig5_rate_rooms.svg", "figures/revisits.png"})
     EXPECT_TRUE(fs::exists(dir_ / "j1" / f)) << f;
 }
 
@@ -287,7 +288,8 @@ TEST_F(BenchCliTest, ReportOfAHandWrittenFile) {
                      R"([0-9]+\.[0-9]{2}× \| 0/1 \(0 %\) \| 3/3 \(100 %\) \|)")))
       << md;
   EXPECT_NE(md.find("## Oracle reference"), std::string::npos) << md;
-  for (const char* f : {"report.html", "figures/revisits.png", "figures/revisits.svg"})
+  for (const char* f :
+       {"report.html", "figures/revisits.png", "figures/revisits.svg", "figures/revisits.pdf"})
     EXPECT_TRUE(fs::exists(dir_ / "rep" / f)) << f;
   // The records have no curves and no run outputs: no Fig. 5-7.
   EXPECT_FALSE(fs::exists(dir_ / "rep" / "figures" / "fig5_rate_small_house.png"));

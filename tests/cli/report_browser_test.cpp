@@ -44,17 +44,26 @@ var check_errors = 0;
 window.addEventListener('error', function () { check_errors++; }, true);
 window.addEventListener('load', function () {
   var figures = document.querySelectorAll('figure.report-figure');
-  var svg_ok = 0, svg_images = 0, images_ok = 0;
+  var svg_ok = 0, svg_images = 0, images_ok = 0, broken_refs = 0;
   figures.forEach(function (f) {
     var svg = f.querySelector(':scope > svg');
     if (!svg) return;
-    var box = svg.getBoundingClientRect();
-    if (box.width > 100 && box.height > 100 && svg.querySelectorAll('text').length > 0) svg_ok++;
-    svg.querySelectorAll('image').forEach(function (im) {
-      svg_images++;
-      var r = im.getBoundingClientRect();
-      if (r.width > 20 && r.height > 20) images_ok++;
+    // Glyphs and images are defined once and placed by <use>; each must find its target in
+    // its own figure. A placed image is measured where its <use> puts it.
+    var uses = svg.querySelectorAll('use');
+    uses.forEach(function (u) {
+      var href = u.getAttribute('href') || u.getAttribute('xlink:href') || '';
+      var target = document.getElementById(href.slice(1));
+      if (!target || !svg.contains(target)) {
+        broken_refs++;
+      } else if (target.tagName === 'image') {
+        var r = u.getBoundingClientRect();
+        if (r.width > 20 && r.height > 20) images_ok++;
+      }
     });
+    var box = svg.getBoundingClientRect();
+    if (box.width > 100 && box.height > 100 && uses.length > 0) svg_ok++;
+    svg_images += svg.querySelectorAll('image').length;
   });
   var tables = document.querySelectorAll('table.report-table');
   var tables_ok = 0, cells = 0, empty_tables = 0;
@@ -66,7 +75,7 @@ window.addEventListener('load', function () {
   document.getElementById('check').textContent =
       'tables=' + tables.length + ' tables_ok=' + tables_ok + ' figures=' + figures.length +
       ' svg_ok=' + svg_ok + ' svg_images=' + svg_images + ' images_ok=' + images_ok +
-      ' errors=' + check_errors;
+      ' broken_refs=' + broken_refs + ' errors=' + check_errors;
 });
 </script>
 )html";
@@ -138,8 +147,9 @@ TEST_F(ReportBrowserTest, EveryTableAndFigureRenders) {
       << log;
   // Tables I, revisits, oracle reference, II, III; Fig. 5, 6 (2 map panels), 7 (4 maps) and
   // the revisits charts (whole run, up to T98), all inline SVG.
-  EXPECT_EQ(match[1].str(),
-            "tables=5 tables_ok=5 figures=5 svg_ok=5 svg_images=6 images_ok=6 errors=0");
+  EXPECT_EQ(
+      match[1].str(),
+      "tables=5 tables_ok=5 figures=5 svg_ok=5 svg_images=6 images_ok=6 broken_refs=0 errors=0");
 }
 
 TEST_F(ReportBrowserTest, ScreenshotShowsMethodsAndTrajectories) {

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -18,16 +19,21 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "../cli/two_room_world.hpp"
+#include "../plots/plot_test_support.hpp"
+#include "../plots/recording_canvas.hpp"
 #include "roomscout/experiment/bench_runner.hpp"
 #include "roomscout/experiment/oracle_references.hpp"
 #include "roomscout/experiment/report.hpp"
 #include "roomscout/experiment/report_writer.hpp"
 #include "roomscout/io/atomic_file.hpp"
+#include "roomscout/plots/detail/svg_ids.hpp"
 
 namespace roomscout::experiment {
 namespace {
 
 namespace fs = std::filesystem;
+using plots::test::record;
+using plots::test::RecordingCanvas;
 
 const fs::path kData = fs::path(ROOMSCOUT_SOURCE_DIR) / "tests" / "experiment" / "data";
 
@@ -69,6 +75,26 @@ const ReportFigure* find(const ReportFigures& figures, const std::string& stem) 
   return nullptr;
 }
 
+/// `path` quoted for the shell.
+std::string shellQuoted(const fs::path& path) {
+  std::string out = "'";
+  for (char c : path.string()) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return out + "'";
+}
+
+/// The executable `name` on PATH, or an empty path.
+fs::path findOnPath(const std::string& name) {
+  const char* path = std::getenv("PATH");
+  std::string dirs = path ? path : "";
+  for (std::size_t start = 0; start <= dirs.size();) {
+    const std::size_t end = std::min(dirs.find(':', start), dirs.size());
+    const fs::path candidate = fs::path(dirs.substr(start, end - start)) / name;
+    if (end > start && ::access(candidate.c_str(), X_OK) == 0) return candidate;
+    start = end + 1;
+  }
+  return {};
+}
+
 std::string format(const char* spec, double v) {
   char buf[64];
   std::snprintf(buf, sizeof buf, spec, v);
@@ -87,32 +113,65 @@ TEST(ReportFigures, RateCurvesShowTheMedianSeedAndGroupMeans) {
   const ReportFigure* world = find(figures, "fig5_rate_small_house");
   ASSERT_NE(world, nullptr);
   // rrt: L98 30, 20, 25 -> median seed 3; mmpf: never, 40 -> lower median seed 2.
-  EXPECT_TRUE(contains(world->figure.svg, "RRT, seed 3")) << world->figure.svg;
-  EXPECT_TRUE(contains(world->figure.svg, "MMPF, seed 2"));
-  EXPECT_EQ(count(world->figure.svg, "class=\"series\""), 2u);  // no oracle line
-  EXPECT_EQ(count(world->figure.svg, "class=\"reference\""), 1u);
-  EXPECT_EQ(world->figure.image.cols, 900);
-  EXPECT_EQ(world->figure.image.rows, 480);
+  const RecordingCanvas world_drawn = record(world->figure);
+  EXPECT_TRUE(world_drawn.anyTextContains("RRT, seed 3"));
+  EXPECT_TRUE(world_drawn.anyTextContains("MMPF, seed 2"));
+  EXPECT_EQ(world_drawn.count("series"), 2u);  // no oracle line
+  EXPECT_EQ(world_drawn.count("reference"), 1u);
+  EXPECT_EQ(plots::renderImage(world->figure).size(), cv::Size(900, 480));
 
   const ReportFigure* group = find(figures, "fig5_rate_he");
   ASSERT_NE(group, nullptr);
-  EXPECT_TRUE(contains(group->figure.svg, "he (2 worlds): mean exploration rate"));
-  EXPECT_TRUE(contains(group->figure.svg, "MMPF, 1 episode"));
-  EXPECT_TRUE(contains(group->figure.svg, "Nearest frontier (explore_lite), 2 episodes"));
-  EXPECT_TRUE(contains(group->figure.svg, "trajectory length [m]"));  // no oracle: metres
+  const RecordingCanvas group_drawn = record(group->figure);
+  EXPECT_TRUE(group_drawn.anyTextContains("he (2 worlds): mean exploration rate"));
+  EXPECT_TRUE(group_drawn.anyTextContains("MMPF, 1 episode"));
+  EXPECT_TRUE(group_drawn.anyTextContains("Nearest frontier (explore_lite), 2 episodes"));
+  EXPECT_TRUE(group_drawn.anyTextContains("trajectory length [m]"));  // no oracle: metres
 
   const ReportFigure* revisits = find(figures, "revisits");
   ASSERT_NE(revisits, nullptr);
-  EXPECT_EQ(count(revisits->figure.svg, "class=\"bar\""), 4u);  // cells with episodes
-  EXPECT_TRUE(contains(revisits->figure.svg, "3.0"));           // rrt in small_house
+  const RecordingCanvas revisits_drawn = record(revisits->figure);
+  EXPECT_EQ(revisits_drawn.count("bar"), 4u);  // cells with episodes
+  EXPECT_TRUE(revisits_drawn.hasText("3.0"));  // rrt in small_house
 
   TempDir dir;
   const std::vector<fs::path> files = writeReportFigures(figures.figures, dir / "figures");
-  ASSERT_EQ(files.size(), 6u);
+  ASSERT_EQ(files.size(), 9u);
   for (const fs::path& f : files) EXPECT_TRUE(fs::exists(f)) << f;
   const cv::Mat png = cv::imread((dir / "figures" / "fig5_rate_small_house.png").string());
   EXPECT_EQ(png.cols, 900);
   EXPECT_EQ(png.rows, 480);
+}
+
+TEST(ReportFigures, PdfRastersToTheFigure) {
+  const fs::path pdftoppm = findOnPath("pdftoppm");
+  ASSERT_FALSE(pdftoppm.empty())
+      << "pdftoppm not found on PATH: install poppler-utils (scripts/setup.sh does)";
+  const ResultSet results = loadResults({kData / "results_curves.jsonl"});
+  const ReportFigures figures = renderReportFigures(results, buildReport(results));
+  const ReportFigure* world = find(figures, "fig5_rate_small_house");
+  ASSERT_NE(world, nullptr);
+  TempDir dir;
+  writeReportFigures({*world}, dir / "figures");
+  // At 96 dpi a PDF figure has one raster pixel per figure pixel.
+  const std::string command = shellQuoted(pdftoppm) + " -r 96 -png -singlefile " +
+                              shellQuoted(dir / "figures" / "fig5_rate_small_house.pdf") + " " +
+                              shellQuoted(dir / "raster") + " 2>" +
+                              shellQuoted(dir / "pdftoppm.log");
+  ASSERT_EQ(std::system(command.c_str()), 0) << io::readFile(dir / "pdftoppm.log");
+  const cv::Mat raster = cv::imread((dir / "raster.png").string(), cv::IMREAD_COLOR);
+  ASSERT_FALSE(raster.empty());
+  ASSERT_EQ(raster.size(), cv::Size(900, 480));
+  EXPECT_LT(plots::test::pixelsNear(raster, plots::colors::kWhite, 0), 900 * 480 * 98 / 100);
+  const std::vector<RecordingCanvas::Polyline> series = record(world->figure).polylinesOf("series");
+  ASSERT_EQ(series.size(), 2u);
+  for (const RecordingCanvas::Polyline& line : series) {
+    EXPECT_GT(plots::test::pixelsNear(raster, line.stroke.color, 10), 300);
+  }
+  // The PDF shows what the PNG does, where it does (anti-aliasing differs a little).
+  cv::Mat difference;
+  cv::absdiff(raster, plots::renderImage(world->figure), difference);
+  EXPECT_LT(cv::mean(difference)[0], 3.0);
 }
 
 TEST(ReportFigures, RevisitsUpToT98HaveTheirOwnFigure) {
@@ -125,10 +184,12 @@ TEST(ReportFigures, RevisitsUpToT98HaveTheirOwnFigure) {
   ASSERT_NE(whole, nullptr);
   ASSERT_NE(to_t98, nullptr);
   EXPECT_EQ(to_t98->kind, "revisits");  // the report's revisits section shows both
-  EXPECT_TRUE(contains(to_t98->figure.svg, "Room revisits up to T98"));
-  EXPECT_TRUE(contains(whole->figure.svg, "2.0"));   // mean of 1, 2, 3
-  EXPECT_TRUE(contains(to_t98->figure.svg, "1.0"));  // mean of 0, 1, 2
-  EXPECT_FALSE(contains(to_t98->figure.svg, "2.0"));
+  const RecordingCanvas whole_drawn = record(whole->figure);
+  const RecordingCanvas to_t98_drawn = record(to_t98->figure);
+  EXPECT_TRUE(to_t98_drawn.hasText("Room revisits up to T98"));
+  EXPECT_TRUE(whole_drawn.hasText("2.0"));   // mean of 1, 2, 3
+  EXPECT_TRUE(to_t98_drawn.hasText("1.0"));  // mean of 0, 1, 2
+  EXPECT_FALSE(to_t98_drawn.hasText("2.0"));
   const ResultSet curves = loadResults({kData / "results_curves.jsonl"});
   EXPECT_EQ(find(renderReportFigures(curves, buildReport(curves)), "revisits_98"), nullptr);
 }
@@ -211,7 +272,7 @@ TEST(ReportWriter, WritesTablesFiguresAndPageFromABench) {
   const fs::path figures = dir / "report" / "figures";
   for (const char* stem :
        {"fig5_rate_rooms", "fig6_trajectories_rooms", "fig7_maps_rooms", "revisits"}) {
-    for (const char* ext : {".png", ".svg"}) {
+    for (const char* ext : {".png", ".svg", ".pdf"}) {
       const fs::path f = figures / (std::string(stem) + ext);
       EXPECT_NE(std::find(output.files.begin(), output.files.end(), f), output.files.end()) << f;
       EXPECT_TRUE(fs::exists(f)) << f;
@@ -232,18 +293,32 @@ TEST(ReportWriter, WritesTablesFiguresAndPageFromABench) {
   EXPECT_EQ(maps.cols, 1200);
   EXPECT_GT(maps.rows, 300);
 
-  const std::string rate_svg = io::readFile(figures / "fig5_rate_rooms.svg");
-  const std::string trajectories_svg = io::readFile(figures / "fig6_trajectories_rooms.svg");
-  const std::string maps_svg = io::readFile(figures / "fig7_maps_rooms.svg");
+  // What the figures show, as drawn by the report again from the same results.
+  ResultSet results = loadResults({dir / "bench"});
+  attachOracleTours(results, {2});
+  const ReportFigures again = renderReportFigures(results, buildReport(results));
+  const ReportFigure* rate_figure = find(again, "fig5_rate_rooms");
+  const ReportFigure* trajectories_figure = find(again, "fig6_trajectories_rooms");
+  const ReportFigure* maps_figure = find(again, "fig7_maps_rooms");
+  ASSERT_TRUE(rate_figure && trajectories_figure && maps_figure);
+  const RecordingCanvas rate_drawn = record(rate_figure->figure);
+  const RecordingCanvas trajectories_drawn = record(trajectories_figure->figure);
+  const RecordingCanvas maps_drawn = record(maps_figure->figure);
   for (const char* method : {"MMPF", "Nearest frontier (explore_lite)"}) {
-    EXPECT_TRUE(contains(rate_svg, method)) << method;
-    EXPECT_TRUE(contains(trajectories_svg, method)) << method;
+    EXPECT_TRUE(rate_drawn.anyTextContains(method)) << method;
+    EXPECT_TRUE(trajectories_drawn.hasText(method)) << method;
   }
-  EXPECT_TRUE(contains(rate_svg, "oracle tour"));
-  EXPECT_EQ(count(trajectories_svg, "class=\"track\""), 2u);
-  EXPECT_EQ(count(trajectories_svg, "<image "), 2u);
-  EXPECT_EQ(count(maps_svg, "<image "), 4u);
-  EXPECT_TRUE(contains(maps_svg, "MMPF, seed 1"));  // no "semantic" run: the first method's
+  EXPECT_TRUE(rate_drawn.anyTextContains("oracle tour"));
+  EXPECT_EQ(trajectories_drawn.count("track"), 2u);
+  EXPECT_EQ(trajectories_drawn.images.size(), 2u);
+  EXPECT_EQ(maps_drawn.images.size(), 4u);
+  // No "semantic" run: the first method's.
+  EXPECT_TRUE(maps_drawn.anyTextContains("MMPF, seed 1"));
+  // The files are these figures.
+  const std::string rate_svg = io::readFile(figures / "fig5_rate_rooms.svg");
+  EXPECT_EQ(rate_svg, plots::renderSvg(rate_figure->figure));
+  EXPECT_EQ(io::readFile(figures / "fig7_maps_rooms.pdf"), plots::renderPdf(maps_figure->figure));
+  EXPECT_EQ(count(io::readFile(figures / "fig6_trajectories_rooms.svg"), "<image "), 2u);
 
   // The page holds every table and every figure, inline.
   const std::string html = io::readFile(dir / "report" / "report.html");
@@ -256,15 +331,21 @@ TEST(ReportWriter, WritesTablesFiguresAndPageFromABench) {
                            "Room revisits up to T98 per method", "tiny (1 world) L98 / oracle"}) {
     EXPECT_TRUE(contains(html, part)) << part;
   }
-  EXPECT_TRUE(contains(html, rate_svg.substr(rate_svg.find("<svg"), 200)));
+  // Inline: the first figure on the page is Fig. 5, its ids prefixed "fig1-".
+  EXPECT_TRUE(contains(html, plots::numberSvgIds(rate_svg.substr(rate_svg.find("<svg")), "fig1-")));
   EXPECT_FALSE(contains(html, "src=\"http")) << "self-contained";
 
   // Deterministic: a second report writes the same tables and figure drawings.
   runReport({dir / "bench"}, dir / "report2");
   EXPECT_EQ(io::readFile(dir / "report2" / "table1.csv"),
             io::readFile(dir / "report" / "table1.csv"));
-  EXPECT_EQ(io::readFile(dir / "report2" / "figures" / "fig6_trajectories_rooms.svg"),
-            trajectories_svg);
+  for (const char* file : {"fig6_trajectories_rooms.png", "fig6_trajectories_rooms.svg",
+                           "fig6_trajectories_rooms.pdf", "revisits.pdf"}) {
+    EXPECT_EQ(io::readFile(dir / "report2" / "figures" / file),
+              io::readFile(dir / "report" / "figures" / file))
+        << file;
+  }
+  EXPECT_EQ(io::readFile(dir / "report2" / "report.html"), html);
 }
 
 }  // namespace

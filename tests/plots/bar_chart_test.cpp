@@ -5,45 +5,44 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "plot_test_support.hpp"
+#include "recording_canvas.hpp"
 #include "roomscout/core/errors.hpp"
 
 namespace roomscout::plots {
 namespace {
 
-using test::count;
+using test::record;
+using test::RecordingCanvas;
 
-TEST(BarChart, OneRectPerValueWithNamesAndValues) {
+TEST(BarChart, OneBarPerValueWithNamesAndValues) {
   const BarChart chart = test::exampleBarChart();
   const Figure figure = renderBarChart(chart);
-  EXPECT_TRUE(test::TagsBalanced(figure.svg));
-  EXPECT_EQ(count(figure.svg, "class=\"bar\""), 8u);  // 3 x 3, one NaN
-  for (const std::string& c : chart.categories) {
-    EXPECT_NE(figure.svg.find(">" + c + "</text>"), std::string::npos) << c;
-  }
-  for (const BarSeries& s : chart.series) {
-    EXPECT_NE(figure.svg.find(">" + s.name + "</text>"), std::string::npos) << s.name;
-  }
-  EXPECT_NE(figure.svg.find(">15</text>"), std::string::npos);  // a value label
-  EXPECT_EQ(figure.image.cols, 640);
-  EXPECT_EQ(figure.image.rows, 360);
+  const RecordingCanvas drawn = record(figure);
+  EXPECT_EQ(drawn.count("bar"), 8u);  // 3 x 3, one NaN
+  for (const std::string& c : chart.categories) EXPECT_TRUE(drawn.hasText(c)) << c;
+  for (const BarSeries& s : chart.series) EXPECT_TRUE(drawn.hasText(s.name)) << s.name;
+  EXPECT_TRUE(drawn.hasText("15"));  // a value label
+  EXPECT_EQ(drawn.count("legend-swatch"), 3u);
+  EXPECT_EQ(drawn.clip_depth, 0);
+  EXPECT_EQ(renderImage(figure).size(), cv::Size(640, 360));
+  EXPECT_TRUE(test::TagsBalanced(renderSvg(figure)));
 }
 
 TEST(BarChart, BarHeightsAreProportionalToTheValues) {
   BarChart chart;
   chart.categories = {"a", "b"};
   chart.series = {{"s", {2.0, 4.0}, {}}};
-  const std::string svg = renderBarChart(chart).svg;
-  const std::vector<double> heights = test::attributeValues(svg, "class=\"bar\"", "height");
-  ASSERT_EQ(heights.size(), 2u);
-  EXPECT_NEAR(heights[1], 2.0 * heights[0], 0.05);
-  const std::vector<double> tops = test::attributeValues(svg, "class=\"bar\"", "y");
-  EXPECT_NEAR(tops[0] + heights[0], tops[1] + heights[1], 0.05);  // both stand on zero
+  const std::vector<RecordingCanvas::Fill> bars = record(renderBarChart(chart)).fillsOf("bar");
+  ASSERT_EQ(bars.size(), 2u);
+  EXPECT_NEAR(bars[1].rect.height, 2.0 * bars[0].rect.height, 0.05);
+  EXPECT_NEAR(bars[0].rect.br().y, bars[1].rect.br().y, 0.05);  // both stand on zero
+  EXPECT_EQ(bars[0].color, paletteColor(0));
 }
 
 TEST(BarChart, PngShowsEverySeriesColour) {
-  const Figure figure = renderBarChart(test::exampleBarChart());
+  const cv::Mat image = renderImage(renderBarChart(test::exampleBarChart()));
   for (std::size_t k = 0; k < 3; ++k) {
-    EXPECT_GT(test::pixelsNear(figure.image, paletteColor(k), 2), 200) << "series " << k;
+    EXPECT_GT(test::pixelsNear(image, paletteColor(k), 2), 200) << "series " << k;
   }
 }
 
@@ -53,11 +52,12 @@ TEST(BarChart, RejectsSeriesOfTheWrongLength) {
   EXPECT_THROW(renderBarChart(chart), InvalidArgument);
 }
 
-TEST(BarChart, WritesBothFiles) {
+TEST(BarChart, WritesEveryFile) {
   test::TempDir dir;
   const FigureFiles files = writeFigure(renderBarChart(test::exampleBarChart()), dir / "revisits");
   EXPECT_TRUE(std::filesystem::is_regular_file(files.png));
   EXPECT_TRUE(std::filesystem::is_regular_file(files.svg));
+  EXPECT_TRUE(std::filesystem::is_regular_file(files.pdf));
   const cv::Mat png = cv::imread(files.png.string());
   EXPECT_EQ(png.size(), cv::Size(640, 360));
 }

@@ -63,12 +63,19 @@ var check_errors = 0;
 window.addEventListener('error', function () { check_errors++; }, true);
 window.addEventListener('load', function () {
   var figures = document.querySelectorAll('figure.report-figure');
-  var svg_ok = 0, img_ok = 0, svg_images = 0;
+  var svg_ok = 0, img_ok = 0, svg_images = 0, broken_refs = 0;
   figures.forEach(function (f) {
     var svg = f.querySelector(':scope > svg');
     if (svg) {
+      // Text is glyph outlines placed by <use>; each must find its glyph in its own figure.
+      var uses = svg.querySelectorAll('use');
+      uses.forEach(function (u) {
+        var href = u.getAttribute('href') || u.getAttribute('xlink:href') || '';
+        var target = document.getElementById(href.slice(1));
+        if (!target || !svg.contains(target)) broken_refs++;
+      });
       var box = svg.getBoundingClientRect();
-      if (box.width > 100 && box.height > 100 && svg.querySelectorAll('text').length > 0) svg_ok++;
+      if (box.width > 100 && box.height > 100 && uses.length > 0) svg_ok++;
       svg_images += svg.querySelectorAll('image').length;
     }
     var img = f.querySelector(':scope > img');
@@ -81,7 +88,7 @@ window.addEventListener('load', function () {
   document.getElementById('check').textContent =
       'tables=' + document.querySelectorAll('table.report-table').length + ' cells=' + cells +
       ' figures=' + figures.length + ' svg_ok=' + svg_ok + ' svg_images=' + svg_images +
-      ' img_ok=' + img_ok + ' errors=' + check_errors;
+      ' img_ok=' + img_ok + ' broken_refs=' + broken_refs + ' errors=' + check_errors;
 });
 </script>
 )html";
@@ -117,7 +124,8 @@ TEST_F(HtmlReportBrowser, RendersEveryTableAndFigure) {
   ASSERT_TRUE(std::regex_search(dom, match, std::regex("<pre id=\"check\">([^<]*)</pre>")))
       << dom.substr(0, 2000) << "\n"
       << log;
-  EXPECT_EQ(match[1].str(), "tables=2 cells=13 figures=4 svg_ok=3 svg_images=4 img_ok=1 errors=0");
+  EXPECT_EQ(match[1].str(),
+            "tables=2 cells=13 figures=4 svg_ok=3 svg_images=4 img_ok=1 broken_refs=0 errors=0");
 }
 
 TEST_F(HtmlReportBrowser, ScreenshotShowsChartsAndMaps) {

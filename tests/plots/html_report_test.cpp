@@ -3,18 +3,31 @@
 #include <gtest/gtest.h>
 
 #include <cstring>
+#include <set>
 
 #include <opencv2/imgcodecs.hpp>
 
 #include "plot_test_support.hpp"
 #include "roomscout/core/errors.hpp"
 #include "roomscout/io/atomic_file.hpp"
+#include "roomscout/plots/detail/svg_ids.hpp"
 #include "roomscout/plots/text_encoding.hpp"
 
 namespace roomscout::plots {
 namespace {
 
 using test::count;
+
+/// The values of `marker`...`end` in `text` (e.g. every id="...").
+std::vector<std::string> valuesAfter(const std::string& text, const std::string& marker, char end) {
+  std::vector<std::string> values;
+  for (std::size_t at = text.find(marker); at != std::string::npos;
+       at = text.find(marker, at + 1)) {
+    const std::size_t start = at + marker.size();
+    values.push_back(text.substr(start, text.find(end, start) - start));
+  }
+  return values;
+}
 
 HtmlPage examplePage() {
   HtmlPage page;
@@ -54,9 +67,11 @@ TEST(HtmlReport, ContainsEveryTableAndFigureSelfContained) {
   }
   EXPECT_NE(html.find("<td>semantic</td><td></td>"), std::string::npos);
   EXPECT_NE(html.find("<td>small_house</td>"), std::string::npos);
-  // Figures: SVG inline, the PNG one as a data URI of the rendered image.
+  // Figures: SVG inline with the ids of the page's first figure, the PNG one as a data URI
+  // of the rendered image.
   const HtmlSection& results = page.sections[0];
-  EXPECT_NE(html.find(std::get<HtmlFigure>(results.blocks[2]).svg), std::string::npos);
+  const std::string& svg = std::get<HtmlFigure>(results.blocks[2]).svg;
+  EXPECT_NE(html.find(numberSvgIds(svg.substr(svg.find("<svg")), "fig1-")), std::string::npos);
   EXPECT_EQ(count(html, "<img "), 1u);
   const std::string& png = std::get<HtmlFigure>(page.sections[1].blocks[0]).png_bytes;
   EXPECT_NE(html.find("src=\"data:image/png;base64," + encodeBase64(png) + "\""),
@@ -65,8 +80,8 @@ TEST(HtmlReport, ContainsEveryTableAndFigureSelfContained) {
                               "<figcaption>Revisits</figcaption>"}) {
     EXPECT_NE(html.find(caption), std::string::npos) << caption;
   }
-  // Nothing is fetched from elsewhere.
-  for (const char* external : {"http://", "https://", "<link", "<script", "url("}) {
+  // Nothing is fetched from elsewhere (url(#id) names an element of the page).
+  for (const char* external : {"http://", "https://", "<link", "<script"}) {
     std::string rest = html;
     // The SVG namespaces are names, not fetched resources.
     for (const char* ns : {"http://www.w3.org/2000/svg", "http://www.w3.org/1999/xlink"}) {
@@ -75,6 +90,30 @@ TEST(HtmlReport, ContainsEveryTableAndFigureSelfContained) {
     }
     EXPECT_EQ(rest.find(external), std::string::npos) << external;
   }
+  for (const std::string& url : valuesAfter(html, "url(", ')')) {
+    EXPECT_EQ(url.rfind('#', 0), 0u) << url;
+  }
+}
+
+TEST(HtmlReport, SvgIdsAreUniqueOnThePageAndReferencesStayInTheirFigure) {
+  const std::string html = renderHtml(examplePage());
+  const std::vector<std::string> ids = valuesAfter(html, " id=\"", '"');
+  EXPECT_GT(ids.size(), 20u);  // glyphs, clips, surfaces
+  EXPECT_EQ(std::set<std::string>(ids.begin(), ids.end()).size(), ids.size());
+  std::size_t figures = 0, references = 0;
+  for (std::size_t at = html.find("<figure "); at != std::string::npos;
+       at = html.find("<figure ", at + 1)) {
+    ++figures;
+    const std::string figure = html.substr(at, html.find("</figure>", at) - at);
+    const std::vector<std::string> own = valuesAfter(figure, " id=\"", '"');
+    const std::set<std::string> own_ids(own.begin(), own.end());
+    std::vector<std::string> refs = valuesAfter(figure, "href=\"#", '"');
+    for (const std::string& r : valuesAfter(figure, "url(#", ')')) refs.push_back(r);
+    for (const std::string& r : refs) EXPECT_EQ(own_ids.count(r), 1u) << r;
+    references += refs.size();
+  }
+  EXPECT_EQ(figures, 3u);
+  EXPECT_GT(references, 50u);
 }
 
 TEST(HtmlReport, PngFigureDecodesToTheFigureSize) {

@@ -470,6 +470,7 @@ std::vector<fs::path> writeReportFigures(const std::vector<ReportFigure>& figure
     const plots::FigureFiles files = plots::writeFigure(f.figure, directory / f.stem);
     written.push_back(files.png);
     written.push_back(files.svg);
+    written.push_back(files.pdf);
   }
   return written;
 }

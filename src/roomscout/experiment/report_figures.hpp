@@ -18,7 +18,7 @@
 
 namespace roomscout::experiment {
 
-/// One rendered report figure and where it goes.
+/// One report figure and where it goes.
 struct ReportFigure {
   std::string stem;     ///< file name without extension, e.g. "fig5_rate_small_house"
   std::string kind;     ///< "rate", "trajectories", "maps" or "revisits"
@@ -44,8 +44,8 @@ struct ReportFigures {
 /// a note. Methods have the same colour in every figure.
 ReportFigures renderReportFigures(const ResultSet& results, const Report& report);
 
-/// Writes each figure as `directory`/stem.png and .svg (directory created if needed); returns
-/// the paths. Throws InputError when a file cannot be written.
+/// Writes each figure as `directory`/stem.png, .svg and .pdf (directory created if needed);
+/// returns the paths. Throws InputError when a file cannot be written.
 std::vector<std::filesystem::path> writeReportFigures(const std::vector<ReportFigure>& figures,
                                                       const std::filesystem::path& directory);
 

@@ -16,7 +16,7 @@ namespace roomscout::experiment {
 
 struct ReportSettings {
   bool oracle = true;    ///< plan each world's oracle tour for Table I's L98 / oracle
-  bool figures = true;   ///< draw the figures (PNG + SVG, and on the page)
+  bool figures = true;   ///< draw the figures (PNG, SVG and PDF, and on the page)
   unsigned threads = 0;  ///< oracle tours planned at a time; 0: one per core
 };
 
@@ -37,8 +37,8 @@ plots::HtmlPage reportPage(const Report& report, const std::vector<ReportFigure>
 
 /// Loads the results of `inputs` (loadResults), plans the oracle tours, and writes into `out`
 /// (created if needed): table1.md, table1.csv, table2.md, table3.md, table4_slam.md (when
-/// there is a Table IV), figures/*.png + *.svg and report.html. Throws as loadResults for bad
-/// inputs and InputError when a file cannot be written.
+/// there is a Table IV), figures/*.png, *.svg and *.pdf, and report.html. Throws as
+/// loadResults for bad inputs and InputError when a file cannot be written.
 ReportOutput runReport(const std::vector<std::filesystem::path>& inputs,
                        const std::filesystem::path& out, const ReportSettings& settings = {});
 

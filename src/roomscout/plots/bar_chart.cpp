@@ -52,7 +52,7 @@ Figure renderBarChart(const BarChart& chart) {
   const cv::Rect2d plot = plotArea(chart.size, !chart.title.empty(), !chart.x_label.empty(),
                                    !chart.y_label.empty(), tickLabelWidth(y), legend);
 
-  return renderFigure(chart.size, [&](Canvas& canvas) {
+  return makeFigure(chart.size, [=](Canvas& canvas) {
     drawTitle(canvas, chart.size, chart.title);
     drawYAxis(canvas, plot, y, chart.y_label);
     drawXLabel(canvas, chart.size, plot, chart.x_label);

@@ -30,7 +30,7 @@ struct BarChart {
   FigureSize size;
 };
 
-/// Draws the chart: bars from zero as SVG <rect class="bar">, grouped by category with the
+/// Lays out the chart: bars from zero (Canvas role "bar"), grouped by category with the
 /// category names under the groups, y axis with ticks and grid, legend on the right.
 /// Throws InvalidArgument when a series has not one value per category or the size is below
 /// 1 x 1 px.

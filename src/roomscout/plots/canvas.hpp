@@ -1,7 +1,7 @@
 #pragma once
-// The drawing surface report figures are laid out on once and rendered twice: PngCanvas
-// rasterises with OpenCV, SvgCanvas writes SVG text. Coordinates are pixels with the origin at
-// the top-left corner and y pointing down, as in both formats.
+// The drawing surface report figures are laid out on. CairoCanvas draws it onto a Cairo
+// surface (PNG, SVG or PDF); tests may record the calls instead. Coordinates are pixels with
+// the origin at the top-left corner and y pointing down.
 
 #include <string_view>
 #include <vector>
@@ -16,7 +16,7 @@ namespace roomscout::plots {
 struct Stroke {
   Rgb color = colors::kBlack;
   double width_px = 1.0;
-  bool dashed = false;
+  bool dashed = false;  ///< dashes of 6 and gaps of 4 stroke widths
 };
 
 enum class TextAnchor { kStart, kMiddle, kEnd };
@@ -29,12 +29,12 @@ struct TextStyle {
   bool vertical = false;  ///< rotated 90 degrees counter-clockwise (reads bottom to top)
 };
 
-/// Estimated advance width of `text` at `style` [px]: the same for both backends, so layouts
-/// agree; generous for proportional SVG fonts. PNG text is ASCII only (Hershey fonts).
+/// Advance width of UTF-8 `text` at `style` [px]: Cairo's extents of the font CairoCanvas
+/// draws with (DejaVu Sans), so layouts fit the rendered text in every format. Thread-safe.
 double textWidth(std::string_view text, const TextStyle& style);
 
-/// A figure's drawing surface. `role` names what an element is (a "series" polyline, a "bar");
-/// SVG writes it as the element's class, so pages and tests can find the parts. Not
+/// A figure's drawing surface. `role` names what an element is (a "series" polyline, a "bar")
+/// for whoever inspects the drawing, such as the tests; rendered files do not carry it. Not
 /// thread-safe.
 class Canvas {
  public:
@@ -48,9 +48,10 @@ class Canvas {
   virtual void polyline(const std::vector<cv::Point2d>& points, const Stroke& stroke,
                         std::string_view role = {}) = 0;
   virtual void circle(cv::Point2d centre, double radius_px, Rgb fill) = 0;
-  /// `anchor` is on the text's baseline (for vertical text: the baseline runs upwards).
+  /// UTF-8 `text`; `anchor` is on its baseline (for vertical text: the baseline runs upwards).
   virtual void text(cv::Point2d anchor, std::string_view text, const TextStyle& style) = 0;
-  /// Draws a BGR (or grey) image stretched over `rect`, nearest-neighbour when enlarged.
+  /// Draws an 8-bit BGR, BGRA (alpha ignored) or grey image stretched over `rect`,
+  /// nearest-neighbour when enlarged. Throws InvalidArgument for other pixel types.
   virtual void image(const cv::Mat& image, const cv::Rect2d& rect) = 0;
   /// Until the matching popClip(), drawing outside `rect` is cut away. Clips nest.
   virtual void pushClip(const cv::Rect2d& rect) = 0;

@@ -1,7 +1,6 @@
 #include "roomscout/plots/color.hpp"
 
 #include <array>
-#include <cstdio>
 
 namespace roomscout::plots {
 
@@ -17,12 +16,6 @@ Rgb paletteColor(std::size_t index) {
                                                   {188, 189, 34},
                                                   {23, 190, 207}}};
   return kTab10[index % kTab10.size()];
-}
-
-std::string toHex(Rgb color) {
-  char text[8];
-  std::snprintf(text, sizeof text, "#%02x%02x%02x", color.r, color.g, color.b);
-  return text;
 }
 
 }  // namespace roomscout::plots

@@ -1,12 +1,8 @@
 #pragma once
-// Colours of report figures: 8-bit RGB, the series palette, and conversions for the two
-// figure backends (OpenCV's BGR scalars, SVG's #rrggbb).
+// Colours of report figures: 8-bit RGB and the series palette.
 
 #include <cstddef>
 #include <cstdint>
-#include <string>
-
-#include <opencv2/core/types.hpp>
 
 namespace roomscout::plots {
 
@@ -20,12 +16,6 @@ struct Rgb {
 /// The k-th colour of the series palette (matplotlib's "tab10", repeating after 10), so the
 /// same series index has the same colour in every figure.
 Rgb paletteColor(std::size_t index);
-
-/// "#rrggbb".
-std::string toHex(Rgb color);
-
-/// An OpenCV colour (B, G, R order).
-inline cv::Scalar toBgr(Rgb color) { return cv::Scalar(color.b, color.g, color.r); }
 
 namespace colors {
 inline constexpr Rgb kBlack{0, 0, 0};

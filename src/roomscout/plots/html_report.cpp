@@ -4,10 +4,9 @@
 #include <cctype>
 #include <vector>
 
-#include <opencv2/imgcodecs.hpp>
-
 #include "roomscout/core/errors.hpp"
 #include "roomscout/io/atomic_file.hpp"
+#include "roomscout/plots/detail/svg_ids.hpp"
 #include "roomscout/plots/text_encoding.hpp"
 
 namespace roomscout::plots {
@@ -91,10 +90,12 @@ void appendTable(std::string& out, const HtmlTable& table) {
   out += "</tbody>\n</table>\n";
 }
 
-void appendFigure(std::string& out, const HtmlFigure& figure) {
+/// Appends the page's `number`-th figure (from 1); the ids of its SVG get the prefix
+/// "figN-", so they differ from those of the page's other figures.
+void appendFigure(std::string& out, const HtmlFigure& figure, int number) {
   out += "<figure class=\"report-figure\">\n";
   if (!figure.svg.empty()) {
-    out += stripXmlDeclaration(figure.svg);
+    out += numberSvgIds(stripXmlDeclaration(figure.svg), "fig" + std::to_string(number) + "-");
     if (out.back() != '\n') out += '\n';
   } else if (!figure.png_bytes.empty()) {
     out += "<img alt=\"" + escapeXml(figure.caption) + "\" src=\"data:image/png;base64," +
@@ -109,9 +110,10 @@ void appendFigure(std::string& out, const HtmlFigure& figure) {
 
 struct BlockWriter {
   std::string& out;
+  int& figures;  ///< figures written so far
   void operator()(const HtmlParagraph& p) const { out += "<p>" + escapeXml(p.text) + "</p>\n"; }
   void operator()(const HtmlTable& t) const { appendTable(out, t); }
-  void operator()(const HtmlFigure& f) const { appendFigure(out, f); }
+  void operator()(const HtmlFigure& f) const { appendFigure(out, f, ++figures); }
 };
 
 std::string markdownCell(const std::string& cell) {
@@ -133,13 +135,9 @@ HtmlFigure htmlFigure(const Figure& figure, std::string caption, FigureEmbedding
   HtmlFigure out;
   out.caption = std::move(caption);
   if (embedding == FigureEmbedding::kSvg) {
-    out.svg = figure.svg;
+    out.svg = renderSvg(figure);
   } else {
-    std::vector<std::uint8_t> png;
-    if (figure.image.empty() || !cv::imencode(".png", figure.image, png)) {
-      throw InvalidArgument("report figure '" + out.caption + "': cannot encode its image as PNG");
-    }
-    out.png_bytes.assign(png.begin(), png.end());
+    out.png_bytes = renderPng(figure);
   }
   return out;
 }
@@ -149,7 +147,8 @@ std::string renderHtml(const HtmlPage& page) {
   out += "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n";
   out += "<title>" + escapeXml(page.title) + "</title>\n<style>" + kStyle + "</style>\n";
   out += "</head>\n<body>\n<h1>" + escapeXml(page.title) + "</h1>\n";
-  for (const HtmlParagraph& p : page.intro) BlockWriter{out}(p);
+  int figures = 0;
+  for (const HtmlParagraph& p : page.intro) BlockWriter{out, figures}(p);
   if (page.sections.size() > 1) {
     out += "<nav><ol>\n";
     for (std::size_t s = 0; s < page.sections.size(); ++s) {
@@ -162,7 +161,7 @@ std::string renderHtml(const HtmlPage& page) {
     const HtmlSection& section = page.sections[s];
     out += "<section id=\"section-" + std::to_string(s + 1) + "\">\n<h2>" +
            escapeXml(section.title) + "</h2>\n";
-    for (const HtmlBlock& block : section.blocks) std::visit(BlockWriter{out}, block);
+    for (const HtmlBlock& block : section.blocks) std::visit(BlockWriter{out, figures}, block);
     out += "</section>\n";
   }
   out += "</body>\n</html>\n";

@@ -28,13 +28,14 @@ struct HtmlTable {
 /// A figure: inline SVG when `svg` is set, else the PNG bytes as a data URI.
 struct HtmlFigure {
   std::string caption;
-  std::string svg;        ///< an <svg> document (an XML declaration, if any, is dropped)
+  std::string svg;        ///< an <svg> document (an XML declaration, if any, is dropped; its
+                          ///< element ids get a prefix of their figure, see numberSvgIds)
   std::string png_bytes;  ///< an encoded PNG file
 };
 
 enum class FigureEmbedding { kSvg, kPng };
 
-/// An HtmlFigure of a rendered Figure: its SVG, or its image encoded as PNG.
+/// An HtmlFigure of a Figure: renderSvg(), or renderPng().
 HtmlFigure htmlFigure(const Figure& figure, std::string caption,
                       FigureEmbedding embedding = FigureEmbedding::kSvg);
 

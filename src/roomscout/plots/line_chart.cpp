@@ -43,7 +43,7 @@ Figure renderLineChart(const LineChart& chart) {
   const int x_count = std::max(2, static_cast<int>(plot.width / 80.0));
   const AxisTicks x = niceTicks(x_lo, x_hi, x_count, chart.x_min, chart.x_max);
 
-  return renderFigure(chart.size, [&](Canvas& canvas) {
+  return makeFigure(chart.size, [=](Canvas& canvas) {
     drawTitle(canvas, chart.size, chart.title);
     drawYAxis(canvas, plot, y, chart.y_label);
     drawXTicks(canvas, plot, x);

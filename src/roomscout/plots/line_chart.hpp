@@ -39,9 +39,9 @@ struct LineChart {
   FigureSize size;
 };
 
-/// Draws the chart: title, axes with ticks and grid, one SVG <polyline class="series"> per
-/// series with at least two points (a dot for a single point), the reference line
-/// (<line class="reference">) and a legend on the right. Data outside fixed ranges is clipped.
+/// Lays out the chart: title, axes with ticks and grid, one polyline (Canvas role "series")
+/// per series with at least two points (a dot for a single point), the reference line (role
+/// "reference") and a legend on the right. Data outside fixed ranges is clipped.
 /// Throws InvalidArgument when the size is below 1 x 1 px.
 Figure renderLineChart(const LineChart& chart);
 

@@ -22,7 +22,7 @@ Figure renderMapPanels(const MapPanelFigure& figure) {
   const double cell_w = (figure.size.width_px - pad) / columns;
   const double cell_h = (figure.size.height_px - top) / rows;
 
-  return renderFigure(figure.size, [&](Canvas& canvas) {
+  return makeFigure(figure.size, [=](Canvas& canvas) {
     drawTitle(canvas, figure.size, figure.title);
     for (std::size_t i = 0; i < n; ++i) {
       const MapPanel& panel = figure.panels[i];

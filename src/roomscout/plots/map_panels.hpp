@@ -39,7 +39,7 @@ struct MapPanelFigure {
 };
 
 /// Lays the panels out in a grid of equal cells, each with its title above its image scaled
-/// to fit; tracks are SVG <polyline class="track">, images <image> elements with PNG data.
+/// to fit, and its tracks over it (Canvas role "track").
 /// Throws InvalidArgument when the size is below 1 x 1 px or `columns` is negative.
 Figure renderMapPanels(const MapPanelFigure& figure);
 
