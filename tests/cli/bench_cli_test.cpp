@@ -15,6 +15,8 @@
 #include <string>
 #include <vector>
 
+#include "../support/run_command.hpp"
+#include "../support/temp_dir.hpp"
 #include "roomscout/experiment/result_record.hpp"
 #include "two_room_world.hpp"
 
@@ -25,21 +27,12 @@ namespace {
 class BenchCliTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("roomscout_bench_cli_" + std::to_string(std::random_device{}()));
     fs::create_directories(dir_ / "tiny");
     roomscout::test::writeTwoRoomWorld(dir_ / "tiny");
   }
-  void TearDown() override { fs::remove_all(dir_); }
 
   std::pair<int, std::string> run(const std::string& args) {
-    const fs::path log = dir_ / "log.txt";
-    const int status = std::system(
-        (std::string(ROOMSCOUT_BINARY) + " " + args + " > " + log.string() + " 2>&1").c_str());
-    std::ifstream in(log);
-    std::stringstream s;
-    s << in.rdbuf();
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, s.str()};
+    return roomscout::test::asPair(roomscout::test::runRoomscout(args, dir_));
   }
 
   std::string world() const { return (dir_ / "tiny" / "rooms.yaml").string(); }
@@ -57,7 +50,8 @@ class BenchCliTest : public ::testing::Test {
            std::to_string(r["seed"].get<int>());
   }
 
-  fs::path dir_;
+  roomscout::test::TempDir tmp_;
+  const fs::path dir_ = tmp_.path();
 };
 
 TEST_F(BenchCliTest, RerunSkipsRecordedEpisodesAndResumesAfterATruncatedLine) {

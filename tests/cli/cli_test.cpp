@@ -12,37 +12,18 @@
 #include <sstream>
 #include <string>
 
+#include "../support/run_command.hpp"
+#include "../support/temp_dir.hpp"
+
 namespace fs = std::filesystem;
 
 namespace {
 
-struct CommandResult {
-  int exit_code = -1;
-  std::string output;  // stdout and stderr
-};
+using roomscout::test::CommandResult;
 
 class CliTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    std::random_device rd;
-    dir_ = fs::temp_directory_path() / ("roomscout_cli_" + std::to_string(rd()));
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  CommandResult run(const std::string& args) {
-    const fs::path log = dir_ / "log.txt";
-    const std::string cmd =
-        std::string(ROOMSCOUT_BINARY) + " " + args + " > " + log.string() + " 2>&1";
-    const int status = std::system(cmd.c_str());
-    CommandResult r;
-    r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    std::ifstream in(log);
-    std::stringstream s;
-    s << in.rdbuf();
-    r.output = s.str();
-    return r;
-  }
+  CommandResult run(const std::string& args) { return roomscout::test::runRoomscout(args, dir_); }
 
   fs::path write(const std::string& name, const std::string& text) {
     const fs::path p = dir_ / name;
@@ -66,7 +47,8 @@ class CliTest : public ::testing::Test {
                  "occupied_thresh: 0.65\nfree_thresh: 0.196\n");
   }
 
-  fs::path dir_;
+  roomscout::test::TempDir tmp_;
+  const fs::path dir_ = tmp_.path();
 };
 
 TEST_F(CliTest, ExploreMapServerWorldWritesEveryOutput) {

@@ -13,27 +13,17 @@
 #include <string>
 #include <vector>
 
+#include "../support/run_command.hpp"
+#include "../support/temp_dir.hpp"
+
 namespace fs = std::filesystem;
 
 namespace {
 
 class LargeMapCliTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("roomscout_large_map_cli_" + std::to_string(std::random_device{}()));
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  std::pair<int, std::string> run(const std::string& args) {
-    const fs::path log = dir_ / "log.txt";
-    const int status = std::system(
-        (std::string(ROOMSCOUT_BINARY) + " " + args + " > " + log.string() + " 2>&1").c_str());
-    std::ifstream in(log);
-    std::stringstream s;
-    s << in.rdbuf();
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, s.str()};
+  roomscout::test::CommandResult run(const std::string& args) {
+    return roomscout::test::runRoomscout(args, dir_);
   }
 
   fs::path write(const std::string& name, const std::string& text) {
@@ -59,7 +49,8 @@ class LargeMapCliTest : public ::testing::Test {
     EXPECT_FALSE(fs::exists(out)) << args << ": left " << out;
   }
 
-  fs::path dir_;
+  roomscout::test::TempDir tmp_;
+  const fs::path dir_ = tmp_.path();
 };
 
 TEST_F(LargeMapCliTest, AQuarterSquareKilometreMapIsRefusedByEveryCommand) {

@@ -12,27 +12,17 @@
 #include <sstream>
 #include <string>
 
+#include "../support/run_command.hpp"
+#include "../support/temp_dir.hpp"
+
 namespace fs = std::filesystem;
 
 namespace {
 
 class MapsCliTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    std::random_device rd;
-    dir_ = fs::temp_directory_path() / ("roomscout_maps_cli_" + std::to_string(rd()));
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
   std::pair<int, std::string> run(const std::string& args) {
-    const fs::path log = dir_ / "log.txt";
-    const int status = std::system(
-        (std::string(ROOMSCOUT_BINARY) + " " + args + " > " + log.string() + " 2>&1").c_str());
-    std::ifstream in(log);
-    std::stringstream s;
-    s << in.rdbuf();
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, s.str()};
+    return roomscout::test::asPair(roomscout::test::runRoomscout(args, dir_));
   }
 
   void write(const std::string& name, const std::string& text) {
@@ -51,7 +41,8 @@ class MapsCliTest : public ::testing::Test {
     return img;
   }
 
-  fs::path dir_;
+  roomscout::test::TempDir tmp_;
+  const fs::path dir_ = tmp_.path();
 };
 
 TEST_F(MapsCliTest, MapsBuildsBothMapsFromAMapServerMap) {

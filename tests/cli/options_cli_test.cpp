@@ -11,6 +11,7 @@
 #include <sstream>
 #include <string>
 
+#include "../support/temp_dir.hpp"
 #include "roomscout/core/errors.hpp"
 #include "roomscout/experiment/episode_setup.hpp"
 #include "roomscout/exploration/strategy_registry.hpp"
@@ -29,13 +30,6 @@ std::string readText(const fs::path& path) {
 
 class OptionsCliTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    std::random_device rd;
-    dir_ = fs::temp_directory_path() / ("roomscout_options_cli_" + std::to_string(rd()));
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
   struct Result {
     int exit_code = -1;
     std::string out;  // stdout only
@@ -57,7 +51,8 @@ class OptionsCliTest : public ::testing::Test {
     return p;
   }
 
-  fs::path dir_;
+  roomscout::test::TempDir tmp_;
+  const fs::path dir_ = tmp_.path();
 };
 
 TEST_F(OptionsCliTest, DocsOptionsMdIsTheMarkdownOutput) {

@@ -22,6 +22,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "../plots/browser_support.hpp"
+#include "../support/temp_dir.hpp"
 #include "roomscout/maps/semantic_map.hpp"
 #include "two_room_world.hpp"
 
@@ -91,16 +92,9 @@ class ReportBrowserTest : public ::testing::Test {
       GTEST_SKIP() << "no Chromium (apt-get install chromium, or ROOMSCOUT_BROWSER_TESTS=1 "
                       "scripts/setup.sh)";
     }
-    dir_ = fs::temp_directory_path() / ("roomscout_report_browser_" + std::to_string(::getpid()) +
-                                        "_" + std::to_string(std::random_device{}()));
     fs::create_directories(dir_ / "tiny");
     roomscout::test::writeTwoRoomWorld(dir_ / "tiny");
   }
-  void TearDown() override {
-    std::error_code ec;
-    if (!dir_.empty()) fs::remove_all(dir_, ec);
-  }
-
   /// Runs the roomscout binary; exit code and output.
   std::pair<int, std::string> run(const std::string& args) {
     const fs::path log = dir_ / "log.txt";
@@ -124,7 +118,8 @@ class ReportBrowserTest : public ::testing::Test {
   }
 
   std::optional<fs::path> chromium_;
-  fs::path dir_;
+  roomscout::test::TempDir tmp_;
+  const fs::path dir_ = tmp_.path();
 };
 
 TEST_F(ReportBrowserTest, EveryTableAndFigureRenders) {

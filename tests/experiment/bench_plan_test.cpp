@@ -9,6 +9,7 @@
 #include <random>
 #include <set>
 
+#include "../support/temp_dir.hpp"
 #include "roomscout/core/errors.hpp"
 
 namespace roomscout::experiment {
@@ -98,12 +99,9 @@ TEST(BenchPlan, SplitList) {
 
 class BenchWorldsTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("roomscout_plan_" + std::to_string(std::random_device{}()));
-    fs::create_directories(dir_ / "houseexpo");
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  fs::path dir_;
+  void SetUp() override { fs::create_directories(dir_ / "houseexpo"); }
+  roomscout::test::TempDir tmp_;
+  const fs::path dir_ = tmp_.path();
 };
 
 TEST_F(BenchWorldsTest, FolderExpandsToItsYamlFilesSortedByName) {

@@ -11,6 +11,7 @@
 #include <sstream>
 #include <string>
 
+#include "../support/temp_dir.hpp"
 #include "roomscout/sim/builtin_worlds.hpp"
 
 namespace roomscout::experiment {
@@ -27,12 +28,6 @@ std::string slurp(const fs::path& file) {
 
 class RecordedEpisodeTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("roomscout_recorded_" + std::to_string(std::random_device{}()));
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
   RecordedEpisode run(const std::string& method, bool background, const fs::path& out) {
     RunSettings settings;
     settings.max_time_s = 120.0;  // small_house: about a third explored, dozens of map updates
@@ -42,7 +37,8 @@ class RecordedEpisodeTest : public ::testing::Test {
     return runRecordedEpisode(model, setup, settings, out);
   }
 
-  fs::path dir_;
+  roomscout::test::TempDir tmp_;
+  const fs::path dir_ = tmp_.path();
 };
 
 TEST_F(RecordedEpisodeTest, MapsBuiltInTheBackgroundAreThoseBuiltAtOnce) {

@@ -21,6 +21,7 @@
 #include "../cli/two_room_world.hpp"
 #include "../plots/plot_test_support.hpp"
 #include "../plots/recording_canvas.hpp"
+#include "../support/temp_dir.hpp"
 #include "roomscout/experiment/bench_runner.hpp"
 #include "roomscout/experiment/oracle_references.hpp"
 #include "roomscout/experiment/report.hpp"
@@ -37,26 +38,7 @@ using plots::test::RecordingCanvas;
 
 const fs::path kData = fs::path(ROOMSCOUT_SOURCE_DIR) / "tests" / "experiment" / "data";
 
-class TempDir {
- public:
-  TempDir() {
-    static std::atomic<int> counter{0};
-    path_ = fs::temp_directory_path() / ("roomscout_report_figures_" + std::to_string(::getpid()) +
-                                         "_" + std::to_string(counter.fetch_add(1)));
-    fs::remove_all(path_);
-    fs::create_directories(path_);
-  }
-  ~TempDir() {
-    std::error_code ec;
-    fs::remove_all(path_, ec);
-  }
-  TempDir(const TempDir&) = delete;
-  TempDir& operator=(const TempDir&) = delete;
-  fs::path operator/(const std::string& name) const { return path_ / name; }
-
- private:
-  fs::path path_;
-};
+using roomscout::test::TempDir;
 
 std::size_t count(const std::string& text, const std::string& part) {
   std::size_t n = 0;

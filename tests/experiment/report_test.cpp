@@ -14,7 +14,7 @@
 #include <sstream>
 #include <variant>
 
-#include "../io/test_support.hpp"
+#include "../support/temp_dir.hpp"
 #include "roomscout/core/errors.hpp"
 #include "roomscout/experiment/paper_reference.hpp"
 #include "roomscout/experiment/report_writer.hpp"
@@ -185,21 +185,20 @@ TEST(Report, PaperNumbersAreTheTablesOfThePaper) {
 }
 
 TEST(Report, WritesEveryTable) {
-  const fs::path dir =
-      fs::temp_directory_path() / ("roomscout_report_" + std::to_string(std::random_device{}()));
+  const roomscout::test::TempDir tmp;
+  const fs::path dir = tmp / "report";
   const std::vector<fs::path> files =
       writeReport(buildReport(loadResults({kData / "results_small.jsonl"})), dir);
   EXPECT_EQ(files.size(), 4u);
   for (const char* f : {"table1.md", "table1.csv", "table2.md", "table3.md"})
     EXPECT_TRUE(fs::exists(dir / f)) << f;
-  fs::remove_all(dir);
 }
 
 TEST(Report, NamesTheMethodsWhoseSeedsAllGaveTheSameRun) {
   // mmpf: two identical seeds in each house; rrt: two different seeds; topo: identical in the
   // small house, different in the medium one; nearest_frontier: one seed only, so it says nothing.
-  const fs::path dir = fs::temp_directory_path() / "roomscout_report_same_seed";
-  fs::create_directories(dir);
+  const roomscout::test::TempDir tmp;
+  const fs::path dir = tmp.path();
   const fs::path file = dir / "results.jsonl";
   {
     std::ofstream out(file);
@@ -230,7 +229,6 @@ TEST(Report, NamesTheMethodsWhoseSeedsAllGaveTheSameRun) {
   EXPECT_EQ(report.methodsSameEverySeed(), std::vector<std::string>{"mmpf"});
   const std::string md = table1Markdown(report);
   EXPECT_TRUE(contains(md, "Every seed gave the same run for MMPF (")) << md;
-  fs::remove_all(dir);
 }
 
 TEST(Report, MissingInputIsNamed) {
@@ -269,7 +267,7 @@ std::string groupRecord(const char* world, const char* group, const char* method
 /// every seed; nearest_frontier fails the hard seed 3 that the others pass. houseexpo: rrt
 /// fails plan b. medium_house: no (world, seed) pair that both its methods finished.
 struct HardSeed {
-  io::test::TempDir dir;
+  roomscout::test::TempDir dir;
   fs::path file;
   HardSeed() {
     std::string text;
@@ -398,7 +396,7 @@ TEST(ReportPairing, MeansAreOverThePairsEveryMethodFinished) {
 }
 
 TEST(ReportPairing, WithoutRrtTheFirstMethodIsTheReference) {
-  const io::test::TempDir dir;
+  const roomscout::test::TempDir dir;
   const fs::path file = dir.write(
       "results.jsonl", groupRecord("small_house", "builtin", "topo", 1, 0.99, 100, 50) +
                            groupRecord("small_house", "builtin", "mmpf", 1, 0.99, 80, 40));
@@ -413,7 +411,7 @@ TEST(ReportPairing, WithoutRrtTheFirstMethodIsTheReference) {
 }
 
 TEST(ReportPairing, MethodsAreInThePapersOrderThenTheOthers) {
-  const io::test::TempDir dir;
+  const roomscout::test::TempDir dir;
   std::string text;
   for (const char* method : {"zzz_custom", "semantic_score_only", "semantic", "semantic_paper",
                              "nearest_frontier", "rrt", "semantic_sampling_only", "aaa_custom"})
@@ -438,7 +436,7 @@ std::string slamBlock(double ate_m, bool diverged) {
 /// them "none") and the same episodes under noise tb3 and ICP SLAM ("slam"), each with a
 /// repeated record, and one medium_house episode under noise alone.
 struct TwoSettings {
-  io::test::TempDir dir;
+  roomscout::test::TempDir dir;
   std::vector<fs::path> inputs;
   TwoSettings() {
     fs::create_directories(dir / "ideal");
@@ -596,7 +594,7 @@ TEST(ReportSettings, OldRecordsAreTheMainSetting) {
 }
 
 TEST(ReportSettings, WithoutNoiseFreeEpisodesTheFirstSettingIsTheMainOne) {
-  const io::test::TempDir dir;
+  const roomscout::test::TempDir dir;
   const fs::path file = dir.write(
       "results.jsonl",
       record("small_house", "rrt", 1, 0.99, 130.0, 30.0, kIcp + slamBlock(0.1, false)) +
@@ -612,7 +610,7 @@ TEST(ReportSettings, WithoutNoiseFreeEpisodesTheFirstSettingIsTheMainOne) {
 }
 
 TEST(ReportSettings, BadSlamBlockOrSettingIsNamedWithItsLine) {
-  const io::test::TempDir dir;
+  const roomscout::test::TempDir dir;
   const auto expectError = [&](const std::string& extra, const std::string& problem) {
     const fs::path file =
         dir.write("results.jsonl", record("small_house", "rrt", 1, 0.99, 100.0, 20.0) +

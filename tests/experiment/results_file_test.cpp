@@ -10,6 +10,7 @@
 #include <sstream>
 #include <thread>
 
+#include "../support/temp_dir.hpp"
 #include "roomscout/core/errors.hpp"
 
 namespace roomscout::experiment {
@@ -19,12 +20,6 @@ namespace fs = std::filesystem;
 
 class ResultsFileTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ =
-        fs::temp_directory_path() / ("roomscout_results_" + std::to_string(std::random_device{}()));
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
   fs::path write(const std::string& text) {
     std::ofstream(dir_ / "results.jsonl", std::ios::binary) << text;
     return dir_ / "results.jsonl";
@@ -35,7 +30,8 @@ class ResultsFileTest : public ::testing::Test {
     s << in.rdbuf();
     return s.str();
   }
-  fs::path dir_;
+  roomscout::test::TempDir tmp_;
+  const fs::path dir_ = tmp_.path();
 };
 
 const char* kLine1 = R"({"world":"w","method":"m","seed":1,"x":1})";

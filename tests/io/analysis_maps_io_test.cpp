@@ -4,6 +4,7 @@
 
 #include <opencv2/imgcodecs.hpp>
 
+#include "../support/temp_dir.hpp"
 #include "roomscout/core/errors.hpp"
 #include "roomscout/io/atomic_file.hpp"
 #include "roomscout/io/map_server.hpp"
@@ -13,7 +14,6 @@
 #include "roomscout/maps/grid_image.hpp"
 #include "roomscout/maps/room_segmenter.hpp"
 #include "roomscout/maps/topology_builder.hpp"
-#include "test_support.hpp"
 
 namespace roomscout::io {
 namespace {

@@ -13,8 +13,8 @@
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 
+#include "../support/temp_dir.hpp"
 #include "roomscout/core/errors.hpp"
-#include "test_support.hpp"
 
 namespace roomscout::io {
 namespace {

@@ -8,11 +8,11 @@
 #include <gtest/gtest.h>
 #include <opencv2/imgcodecs.hpp>
 
+#include "../support/temp_dir.hpp"
 #include "roomscout/core/errors.hpp"
 #include "roomscout/io/map_server.hpp"
 #include "roomscout/io/segmentation_dataset.hpp"
 #include "roomscout/sim/image_world.hpp"
-#include "test_support.hpp"
 
 namespace roomscout::io {
 namespace {

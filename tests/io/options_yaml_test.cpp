@@ -5,9 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include "../support/temp_dir.hpp"
 #include "roomscout/core/errors.hpp"
 #include "roomscout/explorer/explorer.hpp"
-#include "test_support.hpp"
 
 namespace roomscout::io {
 namespace {

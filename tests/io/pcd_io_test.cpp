@@ -4,13 +4,13 @@
 
 #include <random>
 
+#include "../support/temp_dir.hpp"
 #include "roomscout/core/errors.hpp"
 #include "roomscout/exploration/strategy_registry.hpp"
 #include "roomscout/io/atomic_file.hpp"
 #include "roomscout/io/map_server.hpp"
 #include "roomscout/sim/episode.hpp"
 #include "roomscout/sim/point_cloud_observer.hpp"
-#include "test_support.hpp"
 
 namespace roomscout::io {
 namespace {

@@ -1,11 +1,8 @@
 #pragma once
-// Helpers for the plots tests: a fresh directory per test, counting substrings, a tag-balance
-// check for SVG/HTML text, and example figures.
-
-#include <unistd.h>
+// Helpers for the plots tests: counting substrings, a tag-balance check for SVG/HTML text, and
+// example figures.
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <filesystem>
 #include <string>
@@ -19,30 +16,11 @@
 #include "roomscout/plots/line_chart.hpp"
 #include "roomscout/plots/map_panels.hpp"
 
+#include "../support/temp_dir.hpp"
+
 namespace roomscout::plots::test {
 
-class TempDir {
- public:
-  TempDir() {
-    static std::atomic<int> counter{0};
-    path_ = std::filesystem::temp_directory_path() /
-            ("roomscout_plots_test_" + std::to_string(::getpid()) + "_" +
-             std::to_string(counter.fetch_add(1)));
-    std::filesystem::remove_all(path_);
-    std::filesystem::create_directories(path_);
-  }
-  ~TempDir() {
-    std::error_code ec;
-    std::filesystem::remove_all(path_, ec);
-  }
-  TempDir(const TempDir&) = delete;
-  TempDir& operator=(const TempDir&) = delete;
-  const std::filesystem::path& path() const { return path_; }
-  std::filesystem::path operator/(std::string_view name) const { return path_ / name; }
-
- private:
-  std::filesystem::path path_;
-};
+using roomscout::test::TempDir;
 
 inline std::size_t count(std::string_view text, std::string_view part) {
   std::size_t n = 0;

@@ -26,11 +26,11 @@
 
 #include <ros/ros.h>
 
-#include "io/test_support.hpp"
+#include "support/temp_dir.hpp"
 
 namespace roomscout::ros1::test {
 
-using io::test::TempDir;
+using roomscout::test::TempDir;
 
 /// A program started with its own environment additions, output to a log file. The
 /// destructor stops it: SIGINT, then SIGKILL after a grace period. The kernel kills it too

@@ -5,13 +5,13 @@
 
 #include <gtest/gtest.h>
 
-#include "../io/test_support.hpp"
+#include "../support/temp_dir.hpp"
 #include "roomscout/core/errors.hpp"
 
 namespace roomscout::sim {
 namespace {
 
-using io::test::Contains;
+using roomscout::test::Contains;
 
 TEST(BuiltinWorlds, NamesMatchTheEmbeddedFilesAndAreSorted) {
   const std::vector<std::string> names = builtinWorldNames();

@@ -7,14 +7,14 @@
 
 #include <gtest/gtest.h>
 
-#include "../io/test_support.hpp"
+#include "../support/temp_dir.hpp"
 #include "roomscout/core/errors.hpp"
 
 namespace roomscout::sim {
 namespace {
 
-using io::test::Contains;
-using io::test::TempDir;
+using roomscout::test::Contains;
+using roomscout::test::TempDir;
 
 constexpr double kEps = 1e-9;
 constexpr const char* kSource = "mem:test_world.yaml";
@@ -251,10 +251,11 @@ TEST(LoadWorldFile, ReadsFileAndNamesItInErrors) {
   EXPECT_EQ(w.walls.size(), 4u);
 
   const auto bad = dir.write("bad.yaml", "name: bad\nstart: [0, 0, 0]\nwals: []\n");
-  const std::string message = io::test::messageOf<InputError>([&] { loadWorldFile(bad); });
+  const std::string message = roomscout::test::messageOf<InputError>([&] { loadWorldFile(bad); });
   EXPECT_TRUE(Contains(message, bad.string() + ": unknown key 'wals'"));
-  EXPECT_TRUE(Contains(io::test::messageOf<InputError>([&] { loadWorldFile(dir / "none.yaml"); }),
-                       (dir / "none.yaml").string() + ": file not found"));
+  EXPECT_TRUE(
+      Contains(roomscout::test::messageOf<InputError>([&] { loadWorldFile(dir / "none.yaml"); }),
+               (dir / "none.yaml").string() + ": file not found"));
 }
 
 /// A bad world and the parts its error message must contain (after "<source>: ").

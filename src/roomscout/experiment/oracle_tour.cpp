@@ -9,6 +9,7 @@
 #include <queue>
 #include <utility>
 
+#include "roomscout/core/detail/grid_ray.hpp"
 #include "roomscout/core/errors.hpp"
 #include "roomscout/core/occupancy_grid.hpp"
 #include "roomscout/planning/costmap.hpp"
@@ -242,23 +243,10 @@ class VisibilityGrid {
       }
     }
     for (const Vec2& direction : directions_) {
-      const double dx = direction.x(), dy = direction.y();
-      const int step_x = dx > 0 ? 1 : -1, step_y = dy > 0 ? 1 : -1;
-      const double t_delta_x = std::abs(1.0 / dx), t_delta_y = std::abs(1.0 / dy);
-      double t_max_x = (step_x > 0 ? (x0 + 1 - origin.x()) : (origin.x() - x0)) * t_delta_x;
-      double t_max_y = (step_y > 0 ? (y0 + 1 - origin.y()) : (origin.y() - y0)) * t_delta_y;
-      int x = x0, y = y0;
+      GridRay ray(origin, direction.x(), direction.y());
       while (true) {
-        double t_enter;
-        if (t_max_x < t_max_y) {
-          t_enter = t_max_x;
-          t_max_x += t_delta_x;
-          x += step_x;
-        } else {
-          t_enter = t_max_y;
-          t_max_y += t_delta_y;
-          y += step_y;
-        }
+        const double t_enter = ray.step();
+        const int x = ray.x(), y = ray.y();
         if (t_enter > range || x < 0 || y < 0 || x >= w || y >= h) break;
         mark(x, y);
         if (blocks[static_cast<std::size_t>(y) * w + x]) break;

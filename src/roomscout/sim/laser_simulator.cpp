@@ -3,6 +3,7 @@
 #include <cmath>
 #include <limits>
 
+#include "roomscout/core/detail/grid_ray.hpp"
 #include "roomscout/core/errors.hpp"
 
 namespace roomscout::sim {
@@ -35,34 +36,15 @@ LaserSimulator::LaserSimulator(const WorldModel& world, const LaserOptions& opti
 double LaserSimulator::castRay(const Vec2& origin_m, double angle_rad, double max_m) const {
   const GridGeometry& g = world_.geometry();
   const double res = g.resolution_m();
-  const Vec2 p = (origin_m - g.origin_m()) / res;
-  const double dx = std::cos(angle_rad), dy = std::sin(angle_rad);
-  int x = static_cast<int>(std::floor(p.x()));
-  int y = static_cast<int>(std::floor(p.y()));
-  if (world_.blocksLaser({x, y})) return 0.0;
-  const int step_x = dx > 0 ? 1 : -1;
-  const int step_y = dy > 0 ? 1 : -1;
-  const double inf = std::numeric_limits<double>::infinity();
-  // Ray parameter t is in raster cells along the unit direction.
-  const double t_delta_x = dx != 0 ? std::abs(1.0 / dx) : inf;
-  const double t_delta_y = dy != 0 ? std::abs(1.0 / dy) : inf;
-  double t_max_x = dx != 0 ? (step_x > 0 ? (x + 1 - p.x()) : (p.x() - x)) * t_delta_x : inf;
-  double t_max_y = dy != 0 ? (step_y > 0 ? (y + 1 - p.y()) : (p.y() - y)) * t_delta_y : inf;
+  GridRay ray((origin_m - g.origin_m()) / res, std::cos(angle_rad), std::sin(angle_rad));
+  if (world_.blocksLaser({ray.x(), ray.y()})) return 0.0;
   const double t_limit = max_m / res;
   const auto& solid = world_.laserSolid();
   const int w = g.width(), h = g.height();
   while (true) {
-    double t_enter;
-    if (t_max_x < t_max_y) {
-      t_enter = t_max_x;
-      t_max_x += t_delta_x;
-      x += step_x;
-    } else {
-      t_enter = t_max_y;
-      t_max_y += t_delta_y;
-      y += step_y;
-    }
-    if (t_enter > t_limit) return inf;
+    const double t_enter = ray.step();
+    if (t_enter > t_limit) return std::numeric_limits<double>::infinity();
+    const int x = ray.x(), y = ray.y();
     if (x < 0 || y < 0 || x >= w || y >= h || solid[static_cast<std::size_t>(y) * w + x]) {
       return t_enter * res;
     }

@@ -8,6 +8,7 @@
 #include <numeric>
 #include <span>
 
+#include "roomscout/core/detail/grid_ray.hpp"
 #include "roomscout/core/errors.hpp"
 
 namespace roomscout::sim {
@@ -208,17 +209,11 @@ void LidarSimulator::castColumn(const Eigen::Vector2d& origin_m, double z_m, dou
 
   const GridGeometry& g = world_.geometry();
   const double res = g.resolution_m();
-  const Eigen::Vector2d p = (origin_m - g.origin_m()) / res;
-  int x = static_cast<int>(std::floor(p.x()));
-  int y = static_cast<int>(std::floor(p.y()));
+  GridRay ray((origin_m - g.origin_m()) / res, cos_az, sin_az);
+  const int x = ray.x(), y = ray.y();
   const int w = g.width(), h = g.height();
-  const int step_x = cos_az > 0 ? 1 : -1;
-  const int step_y = sin_az > 0 ? 1 : -1;
-  // DDA parameter in raster cells along the unit horizontal direction.
-  const double t_delta_x = cos_az != 0 ? std::abs(1.0 / cos_az) : inf;
-  const double t_delta_y = sin_az != 0 ? std::abs(1.0 / sin_az) : inf;
-  double t_max_x = cos_az != 0 ? (step_x > 0 ? (x + 1 - p.x()) : (p.x() - x)) * t_delta_x : inf;
-  double t_max_y = sin_az != 0 ? (step_y > 0 ? (y + 1 - p.y()) : (p.y() - y)) * t_delta_y : inf;
+  const int step_x = ray.stepX();
+  const int step_y = ray.stepY();
   double t_in = 0.0;
   if (x < 0 || y < 0 || x >= w || y >= h) return;
   // Steps left before the ray leaves the raster along x and along y.
@@ -238,49 +233,24 @@ void LidarSimulator::castColumn(const Eigen::Vector2d& origin_m, double z_m, dou
         code - (kClearBase - 1);  // chessboard distance to a solid column (<= 0: solid)
     if (clear >= kMinJumpClearance) {
       // Every cell within clear - 1 of this one (chessboard distance) is empty: jump to the
-      // step that leaves that square. The DDA parameters still advance by the same additions
-      // in the same order, and which step comes first is decided by the same comparison
-      // (an x-step i precedes a y-step j iff X_i < Y_j), so the ray leaves the square at the
-      // same cell and parameter as one step at a time; only the branchy per-cell loop is
-      // replaced by two independent chains of additions.
+      // step that leaves that square, in the same cell with the same parameters as one step at
+      // a time (GridRay::jump); only the branchy per-cell loop is replaced by two independent
+      // chains of additions.
       const int radius = clear - 1;
-      const int kx = std::min(radius, steps_x) + 1, ky = std::min(radius, steps_y) + 1;
-      double x_last = t_max_x, y_last = t_max_y;  // parameters of the kx-th x-step and ky-th y-step
-      for (int i = 1; i < kx; ++i) x_last += t_delta_x;
-      for (int j = 1; j < ky; ++j) y_last += t_delta_y;
-      double t_out;
-      if (x_last <
-          y_last) {  // leaves along x; the y-steps taken before are those with Y_j <= x_last
-        int m = 0;
-        while (t_max_y <= x_last) {
-          t_max_y += t_delta_y;
-          ++m;
-        }
-        t_out = x_last;
-        t_max_x = x_last + t_delta_x;
-        cell += static_cast<std::ptrdiff_t>(kx) * step_x + m * cell_step_y;
-        steps_x -= kx;
-        steps_y -= m;
-      } else {  // leaves along y; the x-steps taken before are those with X_i < y_last
-        int m = 0;
-        while (t_max_x < y_last) {
-          t_max_x += t_delta_x;
-          ++m;
-        }
-        t_out = y_last;
-        t_max_y = y_last + t_delta_y;
-        cell += static_cast<std::ptrdiff_t>(m) * step_x + ky * cell_step_y;
-        steps_x -= m;
-        steps_y -= ky;
-      }
+      const GridRay::Jump jump =
+          ray.jump(std::min(radius, steps_x) + 1, std::min(radius, steps_y) + 1);
+      const double t_out = jump.t_out;
+      cell += static_cast<std::ptrdiff_t>(jump.x_steps) * step_x + jump.y_steps * cell_step_y;
+      steps_x -= jump.x_steps;
+      steps_y -= jump.y_steps;
       const double t_out_m = t_out * res;
       if (t_out_m >= next_limit_m) retireUpTo(t_out_m);
       if (!active || steps_x < 0 || steps_y < 0) return;
       t_in = t_out;
       continue;
     }
-    const bool along_x = t_max_x < t_max_y;
-    const double t_out = along_x ? t_max_x : t_max_y;
+    const bool along_x = ray.leavesAlongX();
+    const double t_out = ray.exitT();
     const double t_out_m = t_out * res;
     if (clear <= 0) {
       const double t_in_m = t_in * res;
@@ -355,13 +325,12 @@ void LidarSimulator::castColumn(const Eigen::Vector2d& origin_m, double z_m, dou
     // Next cell; the ray ends where it leaves the raster.
     if (along_x) {
       if (--steps_x < 0) return;
-      t_max_x += t_delta_x;
       cell += step_x;
     } else {
       if (--steps_y < 0) return;
-      t_max_y += t_delta_y;
       cell += cell_step_y;
     }
+    ray.step();
     t_in = t_out;
   }
   // Beyond the raster there is neither floor nor ceiling: remaining rings have no return.

@@ -1,5 +1,6 @@
 #pragma once
-// Helpers for the IO tests: a fresh directory per test and message assertions.
+// Test helpers: a fresh temporary directory per test, removed with it, and assertions on
+// error messages.
 
 #include <unistd.h>
 
@@ -13,15 +14,15 @@
 
 #include <gtest/gtest.h>
 
-namespace roomscout::io::test {
+namespace roomscout::test {
 
 class TempDir {
  public:
   TempDir() {
     static std::atomic<int> counter{0};
-    path_ = std::filesystem::temp_directory_path() /
-            ("roomscout_io_test_" + std::to_string(::getpid()) + "_" +
-             std::to_string(counter.fetch_add(1)));
+    path_ =
+        std::filesystem::temp_directory_path() / ("roomscout_test_" + std::to_string(::getpid()) +
+                                                  "_" + std::to_string(counter.fetch_add(1)));
     std::filesystem::remove_all(path_);
     std::filesystem::create_directories(path_);
   }
@@ -80,4 +81,4 @@ std::string messageOf(Fn&& fn) {
 
 using Names = std::vector<std::string>;
 
-}  // namespace roomscout::io::test
+}  // namespace roomscout::test
