@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "roomscout/core/errors.hpp"
+#include "roomscout/core/format.hpp"
 #include "roomscout/experiment/bench_plan.hpp"
 #include "roomscout/experiment/bench_runner.hpp"
 #include "roomscout/experiment/report_writer.hpp"
@@ -22,15 +23,9 @@ namespace {
 /// "1h02m", "3m20s", "42s".
 std::string duration(double s) {
   const long total = std::lround(std::max(0.0, s));
-  char buf[32];
-  if (total >= 3600) {
-    std::snprintf(buf, sizeof buf, "%ldh%02ldm", total / 3600, (total / 60) % 60);
-  } else if (total >= 60) {
-    std::snprintf(buf, sizeof buf, "%ldm%02lds", total / 60, total % 60);
-  } else {
-    std::snprintf(buf, sizeof buf, "%lds", total);
-  }
-  return buf;
+  if (total >= 3600) return formatString("%ldh%02ldm", total / 3600, (total / 60) % 60);
+  if (total >= 60) return formatString("%ldm%02lds", total / 60, total % 60);
+  return formatString("%lds", total);
 }
 
 /// The bench's one-line progress bar on a terminal (stderr); silent when not a terminal.

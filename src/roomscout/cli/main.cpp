@@ -13,6 +13,7 @@
 #include "roomscout/cli/map_commands.hpp"
 #include "roomscout/cli/options_command.hpp"
 #include "roomscout/core/errors.hpp"
+#include "roomscout/core/format.hpp"
 #include "roomscout/experiment/episode_setup.hpp"
 #include "roomscout/experiment/recorded_episode.hpp"
 #include "roomscout/exploration/strategy_registry.hpp"
@@ -111,9 +112,7 @@ int runExplore(const ExploreArgs& args) {
 
   auto fmt = [](const std::optional<double>& v, const char* unit) {
     if (!v) return std::string("never");
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.1f %s", *v, unit);
-    return std::string(buf);
+    return formatString("%.1f %s", *v, unit);
   };
   const std::string revisits = result.room_truth ? std::to_string(result.revisits) + " revisits"
                                                  : std::string("no ground-truth rooms");

@@ -4,33 +4,18 @@
 #include <cstdio>
 
 #include "roomscout/core/errors.hpp"
+#include "roomscout/core/format.hpp"
 
 namespace roomscout {
 namespace {
 
 /// An integer-valued count as digits ("100000000"), a huge one in exponent notation.
-std::string count(double n) {
-  char buf[64];
-  if (n < 1e15) {
-    std::snprintf(buf, sizeof buf, "%.0f", n);
-  } else {
-    std::snprintf(buf, sizeof buf, "%.3g", n);
-  }
-  return buf;
-}
+std::string count(double n) { return formatString(n < 1e15 ? "%.0f" : "%.3g", n); }
 
 /// An area in whole square metres, a small one to three significant digits.
-std::string area(double m2) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, m2 >= 1000.0 ? "%.0f" : "%.3g", m2);
-  return buf;
-}
+std::string area(double m2) { return formatString(m2 >= 1000.0 ? "%.0f" : "%.3g", m2); }
 
-std::string metres(double m) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%g", m);
-  return buf;
-}
+std::string metres(double m) { return formatString("%g", m); }
 
 }  // namespace
 

@@ -9,6 +9,7 @@
 #include <tuple>
 
 #include "roomscout/core/errors.hpp"
+#include "roomscout/core/format.hpp"
 #include "roomscout/experiment/paper_reference.hpp"
 #include "roomscout/experiment/result_record.hpp"
 #include "roomscout/experiment/results_file.hpp"
@@ -27,31 +28,25 @@ std::optional<double> optionalNumber(const nlohmann::json& record, const char* k
   return record[key].get<double>();
 }
 
-std::string format(const char* spec, double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, spec, v);
-  return buf;
-}
-
 /// "mean ± sd", "mean" for one value, "–" for none.
 std::string meanSd(const Stat& s, const char* spec = "%.1f") {
   if (s.n == 0) return "–";
-  std::string text = format(spec, s.mean);
-  if (s.sd) text += " ± " + format(spec, *s.sd);
+  std::string text = formatString(spec, s.mean);
+  if (s.sd) text += " ± " + formatString(spec, *s.sd);
   return text;
 }
 
-std::string csvNumber(double v) { return format("%.6g", v); }
+std::string csvNumber(double v) { return formatString("%.6g", v); }
 std::string csvNumber(const std::optional<double>& v) { return v ? csvNumber(*v) : ""; }
 
 /// Paper columns (T, L) for a built-in world of the paper.
 bool paperColumns(const ReportRow& row) { return !row.is_group && worldRank(row.name) < 100; }
 
 std::string percent(std::size_t part, std::size_t whole) {
-  return format("%.0f", 100.0 * static_cast<double>(part) / static_cast<double>(whole));
+  return formatString("%.0f", 100.0 * static_cast<double>(part) / static_cast<double>(whole));
 }
 
-std::string ratioText(const Stat& s) { return s.n ? format("%.2f", s.mean) + "×" : "–"; }
+std::string ratioText(const Stat& s) { return s.n ? formatString("%.2f", s.mean) + "×" : "–"; }
 
 /// "successes/episodes (percent %)".
 std::string successText(std::size_t successes, std::size_t episodes) {
@@ -773,9 +768,9 @@ plots::HtmlTable table1Cells(const Report& report) {
         return !has ? std::string("–") : shared ? meanSd(stat) : std::string("no shared pair");
       };
       cells.push_back(mean(has ? it->second.t98_s : Stat{}));
-      if (paper_cols) cells.push_back(paper ? format("%.0f", paper->t_s) : "–");
+      if (paper_cols) cells.push_back(paper ? formatString("%.0f", paper->t_s) : "–");
       cells.push_back(mean(has ? it->second.l98_m : Stat{}));
-      if (paper_cols) cells.push_back(paper ? format("%.0f", paper->l_m) : "–");
+      if (paper_cols) cells.push_back(paper ? formatString("%.0f", paper->l_m) : "–");
       cells.push_back(has ? ratioText(it->second.l98_reference_ratio) : "–");
       cells.push_back(has ? ratioText(it->second.t98_reference_ratio) : "–");
       if (oracle) cells.push_back(has ? ratioText(it->second.l98_oracle_ratio) : "–");
@@ -878,14 +873,14 @@ plots::HtmlTable table3Cells(const Report& report) {
         const MapStats& m = it->second;
         s = meanSd(m.storage_kb);
         if (m.update_median_s.n) {
-          u = format("%.4f", m.update_median_s.mean) + " / " +
-              (m.update_p95_s.n ? format("%.4f", m.update_p95_s.mean) : std::string("–"));
+          u = formatString("%.4f", m.update_median_s.mean) + " / " +
+              (m.update_p95_s.n ? formatString("%.4f", m.update_p95_s.mean) : std::string("–"));
         }
       }
       cells.push_back(s);
-      if (paper_cols) cells.push_back(paper ? format("%.1f", paper->storage_kb) : "–");
+      if (paper_cols) cells.push_back(paper ? formatString("%.1f", paper->storage_kb) : "–");
       cells.push_back(u);
-      if (paper_cols) cells.push_back(paper ? format("%.1f", paper->update_s) : "–");
+      if (paper_cols) cells.push_back(paper ? formatString("%.1f", paper->update_s) : "–");
     }
     table.rows.push_back(std::move(cells));
   }
@@ -935,7 +930,8 @@ std::optional<plots::HtmlTable> slamCells(const Report& report) {
         cells.push_back(meanSd(s.ate_rmse_m, "%.2f"));
         const bool ratio =
             main_stats && main_stats->l98_m.n && main_stats->l98_m.mean > 0.0 && s.l98_m.n;
-        cells.push_back(ratio ? format("%.2f", s.l98_m.mean / main_stats->l98_m.mean) + "×" : "–");
+        cells.push_back(ratio ? formatString("%.2f", s.l98_m.mean / main_stats->l98_m.mean) + "×"
+                              : "–");
       }
       table.rows.push_back(std::move(cells));
     }

@@ -10,6 +10,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "roomscout/core/format.hpp"
 #include "roomscout/experiment/paper_reference.hpp"
 #include "roomscout/io/atomic_file.hpp"
 #include "roomscout/io/map_server.hpp"
@@ -24,12 +25,6 @@ namespace {
 
 constexpr plots::Rgb kOracleColor{90, 90, 90};
 constexpr double kPad = 8.0;  // the map panels' padding [px] (plots/map_panels.cpp)
-
-std::string format(const char* spec, double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, spec, v);
-  return buf;
-}
 
 /// A file-name-safe version of a world or group name.
 std::string fileSafe(const std::string& name) {
@@ -132,7 +127,8 @@ std::optional<ReportFigure> worldRateFigure(const Report& report, const EpisodeI
   }
   if (chart.series.empty()) return std::nullopt;
   if (oracle_m)
-    chart.series.push_back(verticalLine("oracle tour " + format("%.1f m", *oracle_m), *oracle_m));
+    chart.series.push_back(
+        verticalLine("oracle tour " + formatString("%.1f m", *oracle_m), *oracle_m));
   ReportFigure f;
   f.stem = "fig5_rate_" + fileSafe(world);
   f.kind = "rate";

@@ -6,6 +6,7 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include "roomscout/core/format.hpp"
 #include "roomscout/io/atomic_file.hpp"
 #include "roomscout/io/map_server.hpp"
 
@@ -25,16 +26,12 @@ std::string trajectoryCsv(const sim::EpisodeResult& result) {
   const bool slam = result.slam.has_value();
   std::string out =
       slam ? "time_s,x_m,y_m,yaw_rad,est_x_m,est_y_m,est_yaw_rad\n" : "time_s,x_m,y_m,yaw_rad\n";
-  char line[192];
   for (const sim::TrajectorySample& s : result.trajectory) {
-    if (slam) {
-      std::snprintf(line, sizeof line, "%.2f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f\n", s.time_s, s.pose.x_m,
-                    s.pose.y_m, s.pose.yaw_rad, s.estimate.x_m, s.estimate.y_m, s.estimate.yaw_rad);
-    } else {
-      std::snprintf(line, sizeof line, "%.2f,%.4f,%.4f,%.4f\n", s.time_s, s.pose.x_m, s.pose.y_m,
-                    s.pose.yaw_rad);
-    }
-    out += line;
+    out += slam ? formatString("%.2f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f\n", s.time_s, s.pose.x_m,
+                               s.pose.y_m, s.pose.yaw_rad, s.estimate.x_m, s.estimate.y_m,
+                               s.estimate.yaw_rad)
+                : formatString("%.2f,%.4f,%.4f,%.4f\n", s.time_s, s.pose.x_m, s.pose.y_m,
+                               s.pose.yaw_rad);
   }
   return out;
 }

@@ -14,6 +14,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "roomscout/core/errors.hpp"
+#include "roomscout/core/format.hpp"
 #include "roomscout/core/grid_limits.hpp"
 #include "roomscout/io/atomic_file.hpp"
 #include "roomscout/io/detail/image_file.hpp"

@@ -6,6 +6,7 @@
 #include <variant>
 
 #include "roomscout/core/errors.hpp"
+#include "roomscout/core/format.hpp"
 #include "roomscout/io/atomic_file.hpp"
 #include "roomscout/io/detail/yaml_support.hpp"
 

@@ -5,15 +5,14 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include "roomscout/core/format.hpp"
 #include "roomscout/io/atomic_file.hpp"
 
 namespace roomscout::io {
 namespace {
 
 std::string hexColour(const std::array<std::uint8_t, 3>& rgb) {
-  char buf[8];
-  std::snprintf(buf, sizeof buf, "#%02x%02x%02x", rgb[0], rgb[1], rgb[2]);
-  return buf;
+  return formatString("#%02x%02x%02x", rgb[0], rgb[1], rgb[2]);
 }
 
 int displayScale(const GridGeometry& g) {

@@ -46,10 +46,4 @@ std::optional<bool> yamlBool(const YAML::Node& node) {
   return value;
 }
 
-std::string formatDouble(double value) {
-  char buffer[64];
-  const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
-  return std::string(buffer, result.ptr);
-}
-
 }  // namespace roomscout::io

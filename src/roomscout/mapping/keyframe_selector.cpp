@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "roomscout/core/errors.hpp"
+#include "roomscout/core/format.hpp"
 
 namespace roomscout {
 
@@ -26,17 +27,12 @@ std::vector<ParameterRef> KeyframeOptions::parameters() {
 
 std::string KeyframeOptions::describe() const {
   if (every_scan) return "keyframes: every scan";
-  char buf[128];
   if (turn_min_move_m == 0.0) {
-    std::snprintf(buf, sizeof buf, "keyframes: every %g m or %g rad (LIO-SAM rule)", distance_m,
-                  angle_rad);
-  } else {
-    std::snprintf(
-        buf, sizeof buf,
-        "keyframes: every %g m, or %g rad after %g m (LIO-SAM rule, no turns on the spot)",
-        distance_m, angle_rad, turn_min_move_m);
+    return formatString("keyframes: every %g m or %g rad (LIO-SAM rule)", distance_m, angle_rad);
   }
-  return buf;
+  return formatString(
+      "keyframes: every %g m, or %g rad after %g m (LIO-SAM rule, no turns on the spot)",
+      distance_m, angle_rad, turn_min_move_m);
 }
 
 KeyframeSelector::KeyframeSelector(const KeyframeOptions& options) : options_(options) {

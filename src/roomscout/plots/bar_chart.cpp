@@ -1,4 +1,5 @@
 #include "roomscout/plots/bar_chart.hpp"
+#include "roomscout/core/format.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -11,7 +12,6 @@ namespace roomscout::plots {
 namespace {
 
 std::string valueLabel(double v, int decimals) {
-  char text[64];
   if (decimals < 0) {
     decimals = 0;
     while (decimals < 2 && std::abs(v * std::pow(10.0, decimals) -
@@ -19,8 +19,7 @@ std::string valueLabel(double v, int decimals) {
       ++decimals;
     }
   }
-  std::snprintf(text, sizeof text, "%.*f", decimals, v);
-  return text;
+  return formatString("%.*f", decimals, v);
 }
 
 }  // namespace

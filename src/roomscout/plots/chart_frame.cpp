@@ -1,4 +1,5 @@
 #include "roomscout/plots/chart_frame.hpp"
+#include "roomscout/core/format.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -16,9 +17,7 @@ constexpr double kLegendRow = 18.0;    ///< legend row height [px]
 }  // namespace
 
 std::string AxisTicks::label(double value) const {
-  char text[64];
-  std::snprintf(text, sizeof text, "%.*f", decimals, value);
-  std::string s = text;
+  std::string s = formatString("%.*f", decimals, value);
   if (s.find_first_not_of("-0.") == std::string::npos && s.front() == '-') s.erase(0, 1);
   return s;
 }

@@ -5,8 +5,8 @@
 #include <utility>
 
 #include "roomscout/core/errors.hpp"
+#include "roomscout/core/format.hpp"
 #include "roomscout/core/occupancy_grid.hpp"
-#include "roomscout/io/detail/yaml_support.hpp"
 #include "roomscout/io/map_server.hpp"
 
 namespace roomscout::sim {
@@ -33,7 +33,7 @@ World loadImageWorld(const std::filesystem::path& yaml_path,
   }
   if (free_pixels == 0) {
     throw InputError(m.image.string(), "no free pixel (nothing is below free_thresh " +
-                                           io::formatDouble(m.free_thresh) +
+                                           formatDouble(m.free_thresh) +
                                            "; is the image inverted? see 'negate')");
   }
 

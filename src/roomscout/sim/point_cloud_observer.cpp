@@ -1,4 +1,5 @@
 #include "roomscout/sim/point_cloud_observer.hpp"
+#include "roomscout/core/format.hpp"
 
 #include <chrono>
 #include <cstdio>
@@ -90,11 +91,9 @@ void PointCloudObserver::insertScan(const Pose2& truth, const Pose2& believed) {
 }
 
 std::string PointCloudObserver::description() const {
-  char buf[256];
-  std::snprintf(buf, sizeof buf, "%s; voxel %g m; %s; floor and ceiling %s", "simulated VLP-16",
-                options_.map.voxel_size_m, options_.keyframes.describe().c_str(),
-                options_.remove_floor_ceiling ? "removed" : "kept");
-  return buf;
+  return formatString("%s; voxel %g m; %s; floor and ceiling %s", "simulated VLP-16",
+                      options_.map.voxel_size_m, options_.keyframes.describe().c_str(),
+                      options_.remove_floor_ceiling ? "removed" : "kept");
 }
 
 }  // namespace roomscout::sim

@@ -9,13 +9,13 @@
 #include <vector>
 
 #include "roomscout/core/errors.hpp"
+#include "roomscout/core/format.hpp"
 #include "roomscout/io/atomic_file.hpp"
 #include "roomscout/io/detail/yaml_support.hpp"
 
 namespace roomscout::sim {
 
 using io::describeYamlNode;
-using io::formatDouble;
 using io::joinNames;
 using io::parseYaml;
 using io::readFile;
@@ -25,10 +25,6 @@ namespace {
 constexpr double kDoorTouchTolerance_m = 1e-6;
 constexpr double kMinPieceLength_m = 1e-9;
 constexpr double kDegToRad = M_PI / 180.0;
-
-std::string formatPoint(const Vec2& p) {
-  return "(" + formatDouble(p.x()) + ", " + formatDouble(p.y()) + ")";
-}
 
 /// Place of a node inside the document, for error messages: "furniture[3].box.size".
 std::string child(const std::string& where, std::string_view key) {

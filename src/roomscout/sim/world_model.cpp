@@ -8,6 +8,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "roomscout/core/errors.hpp"
+#include "roomscout/core/format.hpp"
 #include "roomscout/core/grid_limits.hpp"
 #include "roomscout/sim/detail/polygon_raster.hpp"
 
@@ -34,13 +35,6 @@ std::vector<ParameterRef> WorldModelOptions::parameters() {
 namespace {
 
 bool spans(double z_min, double z_max, double z) { return z_min <= z && z <= z_max; }
-
-std::string formatPoint(const Vec2& p) {
-  std::ostringstream s;
-  s.precision(3);
-  s << "(" << p.x() << ", " << p.y() << ")";
-  return s.str();
-}
 
 }  // namespace
 

@@ -33,7 +33,4 @@ std::optional<double> yamlDouble(const YAML::Node& node, bool finite_only = true
 std::optional<int> yamlInt(const YAML::Node& node);
 std::optional<bool> yamlBool(const YAML::Node& node);
 
-/// Shortest text that reads back as the same double ("0.05", "-3", "1e-07").
-std::string formatDouble(double value);
-
 }  // namespace roomscout::io
