@@ -88,17 +88,17 @@ INSTANTIATE_TEST_SUITE_P(Plans, HouseExpoPlans,
                                   std::to_string(std::get<1>(info.param));
                          });
 
-// HouseExpo plans, from the random starts of the soak (scripts/soak.sh), where a method ended by
-// itself short of 98 %:
-// - nearest_frontier, 4244ce90 seed 2 at 46 % (and four more at 83-97 %): explore_lite's progress
-//   watchdog gives up on a goal whose path first leads away from it, and with the centroid the
-//   whole frontier was dropped; such a centroid now gives way to the frontier's nearest member.
-//   On 1605d751 seed 1 (97.3 %) two frontiers took turns as the goal while the robot dithered
-//   between them, and the stall watchdog's failure dropped the larger one; a stalled goal is now
-//   given up as the progress watchdog gives one up.
-// - semantic, 6a8bc0f2 seed 3 at 83 %: the stall watchdog failed the first end-phase cell just as
-//   it was set (the robot had idled), and the disc ruled out around it took the whole frontier
-//   to the rest of the house; a cell failed from afar now rules out only itself.
+// HouseExpo plans and random starts of the soak (scripts/soak.sh) that end short of 98 % when a
+// frontier is dropped for a goal that was reachable:
+// - nearest_frontier, 4244ce90 seed 2 (46 %; 9a23603e and 9c877717 at 83-87 %): explore_lite's
+//   progress watchdog gives up on a goal whose path first leads away from it. Its frontier must
+//   stay, the centroid giving way to the frontier's nearest member.
+// - nearest_frontier, 1605d751 seed 1 (97.3 %): two frontiers take turns as the goal while the
+//   robot dithers between them, and the stall watchdog gives up on the larger one's centroid.
+//   A stalled goal is given up as the progress watchdog gives one up, its frontier kept.
+// - semantic, 6a8bc0f2 seed 3 (83 %): the stall watchdog fails the first end-phase cell just as
+//   it is set (the robot had idled). A cell failed from afar must rule out only itself, not the
+//   disc around it, which covers the whole frontier to the rest of the house.
 struct SoakStart {
   const char* plan;
   const char* method;
