@@ -1,6 +1,7 @@
 // results.jsonl: whole lines, a truncated last line ignored and cut off, other bad lines named.
 
 #include "roomscout/experiment/results_file.hpp"
+#include "roomscout/experiment/report.hpp"
 
 #include <gtest/gtest.h>
 
@@ -89,6 +90,22 @@ TEST_F(ResultsFileTest, MalformedLineIsNamedWithItsLineNumber) {
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("method"), std::string::npos) << e.what();
   }
+}
+
+// Found by the results fuzz target: nlohmann-json refuses a number beyond double's range with
+// an out_of_range exception, not a parse_error.
+TEST_F(ResultsFileTest, NumberOutOfRangeIsNamedWithItsLineNumber) {
+  const fs::path p =
+      write(std::string(kLine1) +
+            "\n{\"world\": \"w\", \"method\": \"m\", \"seed\": 1, \"rate\": 0.2E658}\n");
+  try {
+    forEachRecord(p, [](const nlohmann::json&, const std::string&) {});
+    ADD_FAILURE();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("results.jsonl:2"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(ResultsFile{p}, InputError);
+  EXPECT_THROW(loadResults({p}), InputError);
 }
 
 TEST_F(ResultsFileTest, ConcurrentAppendsGiveWholeLines) {

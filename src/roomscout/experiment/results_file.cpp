@@ -52,7 +52,7 @@ ResultsScan forEachRecord(
     nlohmann::json record;
     try {
       record = nlohmann::json::parse(line);
-    } catch (const nlohmann::json::parse_error& e) {
+    } catch (const nlohmann::json::exception& e) {  // bad syntax, or a number out of range
       if (!has_newline) {  // an interrupted write: the bench that resumes drops it
         scan.truncated_tail = true;
         break;
