@@ -631,6 +631,9 @@ TEST(ReportSettings, BadSlamBlockOrSettingIsNamedWithItsLine) {
   expectError(R"(, "options": {"noise": {"profile": 2}})",
               "'options.noise.profile' must be a string");
   expectError(R"(, "options": {"slam": "icp"})", "'options.slam' must be an object");
+  // Found by the results fuzz target: a negative count was cast to an unsigned size.
+  expectError(R"(, "map_stats": {"occupancy": {"updates": -12}})",
+              "map_stats.occupancy: 'updates' must be a count >= 0");
 }
 
 }  // namespace

@@ -358,7 +358,10 @@ EpisodeSummary summarizeRecord(const nlohmann::json& record, const std::string& 
       if (!stats.is_object()) throw InputError(w, "must be an object");
       MapSample m;
       m.storage_bytes = optionalNumber(stats, "storage_bytes", w).value_or(0.0);
-      m.updates = static_cast<std::size_t>(optionalNumber(stats, "updates", w).value_or(0.0));
+      const double updates = optionalNumber(stats, "updates", w).value_or(0.0);
+      if (!(updates >= 0.0 && updates <= 1e15))
+        throw InputError(w, "'updates' must be a count >= 0, not " + formatDouble(updates));
+      m.updates = static_cast<std::size_t>(updates);
       m.update_median_ms = optionalNumber(stats, "update_median_ms", w);
       m.update_p95_ms = optionalNumber(stats, "update_p95_ms", w);
       e.maps[type] = m;
