@@ -121,7 +121,7 @@ Decision NearestFrontier::decide(const ExplorationInput& input) {
         f, input.costmap, input.robot.position(), options_.max_centroid_offset_m,
         [&](const Vec2& p) { return near(failed_, p); },
         [&](const Vec2& p) { return near(slow_, p); });
-    if (!target || near(failed_, *target) || near(slow_, *target)) continue;
+    if (!target) continue;
     best = &f;
     best_cost = cost;
     best_target = *target;
