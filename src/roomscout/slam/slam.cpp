@@ -98,6 +98,8 @@ struct Slam::Impl {
   std::optional<Pose2> last_odometry;
   Pose2 map_from_odom;  ///< the last estimate composed with its odometry's inverse
   std::vector<double> update_ms;
+  std::vector<Pose2> trajectory;  ///< the estimate after each update
+  bool finished = false;
   /// Time stamps: MRPT's ICP-SLAM stamps the start pose with the wall clock and trusts odometry
   /// only when it is newer, so updates are stamped after it at a fixed interval (their values
   /// matter only in that order: no velocities are given, so nothing is extrapolated).
@@ -194,6 +196,7 @@ Slam::~Slam() = default;
 
 void Slam::update(const LaserScan& scan, const Pose2& odometry) {
   Impl& s = *impl_;
+  if (s.finished) throw InvalidArgument("SLAM: update() after finish()");
   const auto t0 = Clock::now();
   const std::size_t n = scan.ranges_m.size();
   if (n < 2 || !(scan.angle_increment_rad > 0.0)) {
@@ -247,6 +250,7 @@ void Slam::update(const LaserScan& scan, const Pose2& odometry) {
     const mrpt::math::TPose3D estimate =
         s.builder->getCurrentPoseEstimation()->getMeanVal().asTPose();
     s.map_from_odom = compose(Pose2{estimate.x, estimate.y, estimate.yaw}, inverse(odometry));
+    s.trajectory.push_back(Pose2{estimate.x, estimate.y, wrapAngle(estimate.yaw)});
   } catch (const InvalidArgument&) {
     throw;
   } catch (const std::exception& e) {
@@ -256,6 +260,10 @@ void Slam::update(const LaserScan& scan, const Pose2& odometry) {
 }
 
 Pose2 Slam::pose(const Pose2& odometry) const { return compose(impl_->map_from_odom, odometry); }
+
+void Slam::finish() { impl_->finished = true; }
+
+std::vector<Pose2> Slam::trajectory() const { return impl_->trajectory; }
 
 SlamMode Slam::mode() const { return impl_->mode; }
 

@@ -60,6 +60,12 @@ class Slam {
   /// The estimated pose of a robot now at odometry pose `odometry`: the last SLAM estimate
   /// moved on by the odometry since (the map -> odom correction of a ROS robot).
   Pose2 pose(const Pose2& odometry) const;
+  /// Ends the run: a SLAM with a back end runs its last optimisation. update() may not be
+  /// called afterwards.
+  void finish();
+  /// One pose per update() call: the SLAM's estimate of where the robot was when it took that
+  /// scan, as of now (after the latest optimisation, for a SLAM that optimises).
+  std::vector<Pose2> trajectory() const;
   SlamMode mode() const;
   /// Wall time of each update() [ms].
   const std::vector<double>& updateTimes_ms() const;
