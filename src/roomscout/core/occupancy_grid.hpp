@@ -57,6 +57,12 @@ class OccupancyGrid {
   /// Raw updates, clamped to the options' range.
   void addHit(std::size_t index) { add(index, hit_); }
   void addMiss(std::size_t index) { add(index, miss_); }
+  /// Sets a cell's log-odds, clamped to the options' range (a map rendered from others).
+  void setLogOdds(std::size_t index, float value) {
+    float& l = log_odds_[index];
+    l = std::min(max_, std::max(min_, value));
+    states_[index] = classify(l);
+  }
 
   /// Marks every cell with the given state (used to build grids from existing maps).
   void setState(std::size_t index, CellState state);

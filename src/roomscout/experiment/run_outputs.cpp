@@ -82,7 +82,15 @@ nlohmann::json metricsJson(const RunInfo& info, const sim::EpisodeResult& r) {
                        {"ate_max_m", r.slam->error.max_m},
                        {"heading_rmse_rad", r.slam->error.heading_rmse_rad},
                        {"map_precision", r.slam->map_precision},
-                       {"diverged", r.slam->diverged}};
+                       {"diverged", r.slam->diverged},
+                       {"ate_final_rmse_m", r.slam->final_error.rmse_m},
+                       {"ate_final_max_m", r.slam->final_error.max_m},
+                       {"nodes", r.slam->nodes},
+                       {"loop_closures", r.slam->loop_closures},
+                       {"optimisations", r.slam->optimisations},
+                       {"matches_rejected", r.slam->matches_rejected},
+                       {"loop_search_ms", timing(r.slam->loop_search)},
+                       {"optimise_ms", timing(r.slam->optimise)}};
   }
   if (!info.maps.is_null()) metrics["maps"] = info.maps;
   return metrics;

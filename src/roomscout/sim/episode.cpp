@@ -140,6 +140,16 @@ GridGeometry publishedGeometry(const GridGeometry& full, const CellRect& known, 
                       r.max_y - r.min_y);
 }
 
+slam::SlamOptions slamOptionsFor(slam::SlamOptions options, const NoiseProfile& noise) {
+  if (options.odometry_sd_per_m < 0.0)
+    options.odometry_sd_per_m = noise.odometry.translation_sd_per_m;
+  if (options.odometry_rotation_sd_per_rad < 0.0)
+    options.odometry_rotation_sd_per_rad = noise.odometry.rotation_sd_per_rad;
+  if (options.odometry_rotation_sd_per_m < 0.0)
+    options.odometry_rotation_sd_per_m = noise.odometry.rotation_sd_per_m;
+  return options;
+}
+
 ExplorerOptions explorerOptionsFor(const WorldModel& world, EpisodeConfig config) {
   config.resolve();
   ExplorerOptions options = config.explorer;
@@ -188,9 +198,12 @@ EpisodeResult runEpisode(const WorldModel& world, EpisodeConfig config, Explorer
   std::unique_ptr<slam::Slam> slam;
   std::optional<OdometrySimulator> odometry;
   if (config.slam.slamMode() != slam::SlamMode::kNone) {
-    slam = std::make_unique<slam::Slam>(config.slam, world.start(), seed ^ 0xD1B54A32D192ED03ull);
+    slam = std::make_unique<slam::Slam>(slamOptionsFor(config.slam, noise), world.start(),
+                                        seed ^ 0xD1B54A32D192ED03ull, config.mapping, map_geometry);
     odometry.emplace(noise.odometry, world.start(), seed ^ 0x94D049BB133111EBull);
   }
+  // The graph SLAM renders the robot's map itself; the grid is kept a copy of it.
+  const OccupancyGrid* slam_map = slam ? slam->map() : nullptr;
   Pose2 estimate = robot.pose();
   PathFollower follower(config.follower);
   // Growing mode: the map the Explorer sees, and the bounding box of the known cells.
@@ -236,14 +249,21 @@ EpisodeResult runEpisode(const WorldModel& world, EpisodeConfig config, Explorer
     if (t >= next_scan_s - 1e-9) {
       const LaserScan scan = laser.scan(robot.pose());
       if (slam) {
-        // MRPT estimates the pose from its own map; the grid is built from every scan at that
-        // estimate, as a robot's costmap is, so drift shows in it.
-        slam->update(scan, odometry->pose());
+        // The SLAM estimates the pose from its own map. The graph SLAM's map is the robot's
+        // map; with MRPT's the grid is built from every scan at the estimate, as a robot's
+        // costmap is, so drift shows in it.
+        const CellRect slam_changed = slam->update(scan, odometry->pose());
         estimate = slam->pose(odometry->pose());
+        if (slam_map) {
+          grid.copyCells(*slam_map, slam_changed);
+          changed = slam_changed;
+        }
       }
-      const auto start = Clock::now();
-      changed = mapper.integrate(scan, estimate);
-      occupancy_ms.push_back(msSince(start));
+      if (!slam_map) {
+        const auto start = Clock::now();
+        changed = mapper.integrate(scan, estimate);
+        occupancy_ms.push_back(msSince(start));
+      }
       changed_since_sample.unite(changed);
       next_scan_s += scan_period_s;
       scanned = true;
@@ -336,6 +356,18 @@ EpisodeResult runEpisode(const WorldModel& world, EpisodeConfig config, Explorer
     }
   }
 
+  if (slam) {
+    // The last optimisation: the map and the trajectory as the SLAM ends them.
+    const CellRect changed = slam->finish();
+    if (slam_map && !changed.empty()) {
+      grid.copyCells(*slam_map, changed);
+      changed_since_sample.unite(changed);
+      if (growing) {
+        known_cells.unite(changed);
+        published = grid.reframed(publishedGeometry(map_geometry, known_cells, margin_cells));
+      }
+    }
+  }
   sampleMetrics();
   const OccupancyGrid& final_map = growing ? published : grid;
   explorer.finish(final_map);
@@ -365,6 +397,20 @@ EpisodeResult runEpisode(const WorldModel& world, EpisodeConfig config, Explorer
     SlamResult s;
     s.mode = config.slam.mode;
     s.error = trajectoryError(result.trajectory);
+    // The trajectory as the SLAM ends it (after its last optimisation).
+    const std::vector<Pose2> final_poses = slam->trajectory();
+    if (final_poses.size() == result.trajectory.size()) {
+      for (std::size_t i = 0; i < final_poses.size(); ++i)
+        result.trajectory[i].estimate = final_poses[i];
+    }
+    s.final_error = trajectoryError(result.trajectory);
+    const slam::SlamStats stats = slam->stats();
+    s.nodes = stats.nodes;
+    s.loop_closures = stats.loop_closures;
+    s.optimisations = stats.optimisations;
+    s.matches_rejected = stats.matches_rejected;
+    s.loop_search = TimingStats::of(stats.loop_search_ms);
+    s.optimise = TimingStats::of(stats.optimise_ms);
     s.map_precision = mapPrecision(grid, world);
     s.diverged = s.error.rmse_m > config.slam.diverged_ate_m;
     result.slam = s;

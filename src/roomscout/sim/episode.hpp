@@ -98,10 +98,17 @@ struct CurveSample {
 
 /// How SLAM did, against the truth.
 struct SlamResult {
-  std::string mode;            ///< slam.mode
-  TrajectoryError error;       ///< over the trajectory (one pose per scan)
-  double map_precision = 1.0;  ///< see mapPrecision()
-  bool diverged = false;       ///< error.rmse_m above slam.diverged_ate_m: the run does not count
+  std::string mode;             ///< slam.mode
+  TrajectoryError error;        ///< of the poses used online (one per scan)
+  TrajectoryError final_error;  ///< of the same poses as the SLAM ends them (graph: optimised)
+  int nodes = 0;                ///< graph: scans that became nodes
+  int loop_closures = 0;        ///< graph
+  int optimisations = 0;        ///< graph
+  int matches_rejected = 0;     ///< graph: scan matches refused (odometry used)
+  TimingStats loop_search;      ///< graph: per loop-closure search
+  TimingStats optimise;         ///< graph: per optimisation
+  double map_precision = 1.0;   ///< see mapPrecision()
+  bool diverged = false;        ///< error.rmse_m above slam.diverged_ate_m: the run does not count
 };
 
 struct EpisodeResult {
@@ -145,6 +152,10 @@ using EpisodeProgress = std::function<void(double time_s, double max_time_s, dou
 /// The map a SLAM package would publish: the known area's bounding box (cells of `full`) plus
 /// `margin` cells, clipped to `full` (the simulator's mapper grid, the world's extent).
 GridGeometry publishedGeometry(const GridGeometry& full, const CellRect& known, int margin);
+
+/// The SLAM's options for a simulated robot with `noise`: an odometry model left automatic
+/// (-1) is the simulated odometry's.
+slam::SlamOptions slamOptionsFor(slam::SlamOptions options, const NoiseProfile& noise);
 
 /// config.explorer, resolved for `world`: a stall threshold of 0 becomes 0.1 % of the floor the
 /// robot can reach (a stall window is one in which the map gained less than that).

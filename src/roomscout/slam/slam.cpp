@@ -17,18 +17,21 @@
 #include <chrono>
 #include <cmath>
 #include <exception>
+#include <limits>
 #include <mutex>
 #include <optional>
 
 #include "roomscout/core/errors.hpp"
+#include "roomscout/slam/detail/graph_slam.hpp"
 
 namespace roomscout::slam {
 
 SlamMode SlamOptions::slamMode() const {
   if (mode == "none") return SlamMode::kNone;
+  if (mode == "graph") return SlamMode::kGraph;
   if (mode == "icp") return SlamMode::kIcp;
   if (mode == "rbpf") return SlamMode::kRbpf;
-  throw OptionError("slam.mode must be none, icp or rbpf, not \"" + mode + "\"");
+  throw OptionError("slam.mode must be none, graph, icp or rbpf, not \"" + mode + "\"");
 }
 
 void SlamOptions::validate() const {
@@ -40,22 +43,86 @@ void SlamOptions::validate() const {
   if (!positive(insert_angle_deg)) throw OptionError("slam.insert_angle_deg must be > 0");
   if (particles < 1 || particles > 1000) throw OptionError("slam.particles must be in [1, 1000]");
   if (!positive(diverged_ate_m)) throw OptionError("slam.diverged_ate_m must be > 0");
+  if (submap_scans < 4 || submap_scans > 10000) {
+    throw OptionError("slam.submap_scans must be in [4, 10000]");
+  }
+  if (!(std::isfinite(max_range_m) && max_range_m >= 0.0)) {
+    throw OptionError("slam.max_range_m must be >= 0 (0: the sensor's range)");
+  }
+  for (const auto& [name, value] :
+       {std::pair{"odometry_sd_per_m", odometry_sd_per_m},
+        std::pair{"odometry_rotation_sd_per_rad", odometry_rotation_sd_per_rad},
+        std::pair{"odometry_rotation_sd_per_m", odometry_rotation_sd_per_m}}) {
+    if (!std::isfinite(value) || (value < 0.0 && value != -1.0)) {
+      throw OptionError(std::string("slam.") + name + " must be >= 0, or -1 for automatic");
+    }
+  }
+  if (!positive(loop_search_distance_m))
+    throw OptionError("slam.loop_search_distance_m must be > 0");
+  if (!positive(loop_window_m) || loop_window_m > 10.0) {
+    throw OptionError("slam.loop_window_m must be in (0, 10]");
+  }
+  if (!positive(loop_window_deg) || loop_window_deg > 180.0) {
+    throw OptionError("slam.loop_window_deg must be in (0, 180]");
+  }
+  if (!(loop_min_score > 0.1 && loop_min_score < 0.9)) {
+    throw OptionError("slam.loop_min_score must be in (0.1, 0.9)");
+  }
+  if (loop_every_n_nodes < 0) throw OptionError("slam.loop_every_n_nodes must be >= 0 (0: never)");
+  if (optimise_every_n_nodes < 1) throw OptionError("slam.optimise_every_n_nodes must be >= 1");
+  if (!positive(huber_scale)) throw OptionError("slam.huber_scale must be > 0");
 }
 
 std::vector<ParameterRef> SlamOptions::parameters() {
   return {
       {"mode", &mode,
-       "none (the true pose), icp (MRPT ICP-SLAM) or rbpf (MRPT particle-filter SLAM)"},
+       "none (the true pose), graph (roomscout's graph SLAM: submaps, loop closure, Ceres pose "
+       "graph), icp (MRPT ICP-SLAM) or rbpf (MRPT particle-filter SLAM)"},
       {"match_distance_m", &match_distance_m,
        "distance driven (or match_angle_deg turned) before SLAM corrects the pose with the next "
-       "scan; in between the pose follows the odometry [m]"},
+       "scan (graph: before a scan becomes a node of the graph and joins the map); in between "
+       "the pose follows the odometry [m]"},
       {"match_angle_deg", &match_angle_deg,
        "angle turned before SLAM corrects the pose with a scan [deg]"},
       {"insert_distance_m", &insert_distance_m,
-       "distance driven (or insert_angle_deg turned) before a scan's points join SLAM's map [m]"},
+       "icp, rbpf: distance driven (or insert_angle_deg turned) before a scan's points join "
+       "SLAM's map [m]"},
       {"insert_angle_deg", &insert_angle_deg,
-       "angle turned before a scan is added to the map [deg]"},
+       "icp, rbpf: angle turned before a scan is added to the map [deg]"},
       {"particles", &particles, "rbpf: number of particles"},
+      {"submap_scans", &submap_scans,
+       "graph: nodes per submap; a new submap starts every half of it, so each scan is matched "
+       "against a submap of between half and all of this many scans"},
+      {"max_range_m", &max_range_m,
+       "graph: beams are cut at this range for matching and mapping (0: the sensor's range)"},
+      {"odometry_sd_per_m", &odometry_sd_per_m,
+       "graph: the odometry's along-track error after 1 m (sd) [m], for the prior on each "
+       "match and the check that a match agrees with it; -1: in the simulator the simulated "
+       "robot's odometry (noise.profile), elsewhere 0.02"},
+      {"odometry_rotation_sd_per_rad", &odometry_rotation_sd_per_rad,
+       "graph: the odometry's heading error after turning 1 rad (sd) [rad]; -1: automatic as "
+       "above, elsewhere 0.03"},
+      {"odometry_rotation_sd_per_m", &odometry_rotation_sd_per_m,
+       "graph: the odometry's heading error after driving 1 m (sd) [rad]; -1: automatic as "
+       "above, elsewhere 0.01"},
+      {"loop_search_distance_m", &loop_search_distance_m,
+       "graph: finished submaps with a node this close to a new node are searched for a loop "
+       "closure [m]"},
+      {"loop_window_m", &loop_window_m,
+       "graph: a loop-closure search covers this far from the estimate on each axis [m]"},
+      {"loop_window_deg", &loop_window_deg,
+       "graph: ... and this many degrees either side of its heading [deg]"},
+      {"loop_min_score", &loop_min_score,
+       "graph: a loop closure needs this mean occupancy probability of the scan's points on the "
+       "submap, before and after refinement (0.5 is a scan on unknown ground)"},
+      {"loop_every_n_nodes", &loop_every_n_nodes,
+       "graph: every n-th node is searched for loop closures (0: never)"},
+      {"optimise_every_n_nodes", &optimise_every_n_nodes,
+       "graph: after new loop closures, the pose graph is solved once this many nodes have "
+       "been added since the last solve (and at the end)"},
+      {"huber_scale", &huber_scale,
+       "graph: a loop closure off by more than this many standard deviations pulls with a "
+       "constant force (Huber loss), so a wrong one cannot bend the map"},
       {"diverged_ate_m", &diverged_ate_m,
        "position RMSE against the truth above which a run is marked diverged and does not count as "
        "a success [m]"},
@@ -95,6 +162,7 @@ struct Slam::Impl {
   std::uint64_t seed = 0;
   std::uint64_t updates = 0;
   std::unique_ptr<mrpt::slam::CMetricMapBuilder> builder;
+  std::unique_ptr<detail::GraphSlam> graph;
   std::optional<Pose2> last_odometry;
   Pose2 map_from_odom;  ///< the last estimate composed with its odometry's inverse
   std::vector<double> update_ms;
@@ -129,7 +197,34 @@ struct Slam::Impl {
   }
 };
 
-Slam::Slam(const SlamOptions& options, const Pose2& start, std::uint64_t seed)
+namespace {
+
+detail::GraphSlamOptions graphOptions(const SlamOptions& o) {
+  detail::GraphSlamOptions g;
+  g.node_distance_m = o.match_distance_m;
+  g.node_angle_rad = o.match_angle_deg * M_PI / 180.0;
+  g.submap_scans = o.submap_scans;
+  g.max_range_m = o.max_range_m;
+  if (o.odometry_sd_per_m >= 0.0) g.odometry_sd_per_m = o.odometry_sd_per_m;
+  if (o.odometry_rotation_sd_per_rad >= 0.0) {
+    g.odometry_rotation_sd_per_rad = o.odometry_rotation_sd_per_rad;
+  }
+  if (o.odometry_rotation_sd_per_m >= 0.0)
+    g.odometry_rotation_sd_per_m = o.odometry_rotation_sd_per_m;
+  g.loop_search_distance_m = o.loop_search_distance_m;
+  g.loop_window_m = o.loop_window_m;
+  g.loop_window_rad = o.loop_window_deg * M_PI / 180.0;
+  g.loop_min_score = o.loop_min_score;
+  g.loop_every_n_nodes = o.loop_every_n_nodes;
+  g.optimise_every_n_nodes = o.optimise_every_n_nodes;
+  g.graph.huber_scale = o.huber_scale;
+  return g;
+}
+
+}  // namespace
+
+Slam::Slam(const SlamOptions& options, const Pose2& start, std::uint64_t seed,
+           const OccupancyGridOptions& cells, std::optional<GridGeometry> map_geometry)
     : impl_(std::make_unique<Impl>()) {
   options.validate();
   Impl& s = *impl_;
@@ -140,6 +235,11 @@ Slam::Slam(const SlamOptions& options, const Pose2& start, std::uint64_t seed)
     throw InvalidArgument("SLAM: the start pose is not finite");
   }
   s.seed = seed;
+  if (s.mode == SlamMode::kGraph) {
+    cells.validate();
+    s.graph = std::make_unique<detail::GraphSlam>(graphOptions(options), cells, map_geometry);
+    return;
+  }
 
   const mrpt::poses::CPosePDFGaussian x0(toMrpt(start));
   const double deg = M_PI / 180.0;
@@ -194,7 +294,7 @@ Slam::Slam(const SlamOptions& options, const Pose2& start, std::uint64_t seed)
 
 Slam::~Slam() = default;
 
-void Slam::update(const LaserScan& scan, const Pose2& odometry) {
+CellRect Slam::update(const LaserScan& scan, const Pose2& odometry) {
   Impl& s = *impl_;
   if (s.finished) throw InvalidArgument("SLAM: update() after finish()");
   const auto t0 = Clock::now();
@@ -205,6 +305,19 @@ void Slam::update(const LaserScan& scan, const Pose2& odometry) {
   if (!std::isfinite(odometry.x_m) || !std::isfinite(odometry.y_m) ||
       !std::isfinite(odometry.yaw_rad)) {
     throw InvalidArgument("SLAM: the odometry pose is not finite");
+  }
+  if (s.graph) {
+    // A NaN or negative range is no measurement at all: a beam to drop, not free space.
+    LaserScan clean = scan;
+    for (float& r : clean.ranges_m) {
+      if (std::isnan(r) || r < 0.0f || r == -std::numeric_limits<float>::infinity()) r = -1.0f;
+    }
+    if (!(clean.range_min_m > 0.0)) clean.range_min_m = 1e-3;
+    const CellRect changed = s.graph->update(clean, odometry);
+    ++s.updates;
+    s.trajectory.push_back(s.graph->pose(odometry));
+    s.update_ms.push_back(std::chrono::duration<double, std::milli>(Clock::now() - t0).count());
+    return changed;
   }
 
   // The odometry increment since the previous scan, with MRPT's default Gaussian motion model.
@@ -257,13 +370,41 @@ void Slam::update(const LaserScan& scan, const Pose2& odometry) {
     throw InvalidArgument(std::string("SLAM (") + s.options.mode + "): MRPT failed: " + e.what());
   }
   s.update_ms.push_back(std::chrono::duration<double, std::milli>(Clock::now() - t0).count());
+  return {};
 }
 
-Pose2 Slam::pose(const Pose2& odometry) const { return compose(impl_->map_from_odom, odometry); }
+Pose2 Slam::pose(const Pose2& odometry) const {
+  if (impl_->graph) return impl_->graph->pose(odometry);
+  return compose(impl_->map_from_odom, odometry);
+}
 
-void Slam::finish() { impl_->finished = true; }
+CellRect Slam::finish() {
+  Impl& s = *impl_;
+  if (s.finished) return {};
+  s.finished = true;
+  return s.graph ? s.graph->finish() : CellRect{};
+}
 
-std::vector<Pose2> Slam::trajectory() const { return impl_->trajectory; }
+std::vector<Pose2> Slam::trajectory() const {
+  return impl_->graph ? impl_->graph->trajectory() : impl_->trajectory;
+}
+
+const OccupancyGrid* Slam::map() const { return impl_->graph ? impl_->graph->map() : nullptr; }
+
+SlamStats Slam::stats() const {
+  SlamStats out;
+  if (!impl_->graph) return out;
+  const detail::GraphSlamStats& g = impl_->graph->stats();
+  out.nodes = g.nodes;
+  out.submaps = g.submaps;
+  out.matches_rejected = g.matches_rejected;
+  out.matches_degenerate = g.matches_degenerate;
+  out.loop_closures = g.loop_closures;
+  out.optimisations = g.optimisations;
+  out.loop_search_ms = g.loop_search_ms;
+  out.optimise_ms = g.optimise_ms;
+  return out;
+}
 
 SlamMode Slam::mode() const { return impl_->mode; }
 
