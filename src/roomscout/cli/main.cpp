@@ -187,6 +187,7 @@ int main(int argc, char** argv) {
   auto* methods_cmd = app.add_subcommand("methods", "List the exploration methods");
   const cli::Subcommand maps_cmd = cli::addMapsCommand(app);
   const cli::Subcommand segment_eval_cmd = cli::addSegmentEvalCommand(app);
+  const cli::Subcommand slam_cmd = cli::addSlamCommand(app);
   const cli::Subcommand bench_cmd = cli::addBenchCommand(app);
   const cli::Subcommand report_cmd = cli::addReportCommand(app);
   const cli::Subcommand options_cmd = cli::addOptionsCommand(app);
@@ -201,6 +202,7 @@ int main(int argc, char** argv) {
     if (worlds_cmd->parsed()) return cli::runWorlds();
     if (maps_cmd.app->parsed()) return maps_cmd.run();
     if (segment_eval_cmd.app->parsed()) return segment_eval_cmd.run();
+    if (slam_cmd.app->parsed()) return slam_cmd.run();
     if (bench_cmd.app->parsed()) return bench_cmd.run();
     if (report_cmd.app->parsed()) return report_cmd.run();
     if (options_cmd.app->parsed()) return options_cmd.run();

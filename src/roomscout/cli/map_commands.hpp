@@ -1,5 +1,5 @@
 #pragma once
-// Subcommands that build or score maps outside an episode: `maps` and `segment-eval`.
+// Subcommands that build or score maps outside an episode: `maps`, `segment-eval` and `slam`.
 
 #include <functional>
 
@@ -20,5 +20,9 @@ Subcommand addMapsCommand(CLI::App& app);
 
 /// `roomscout segment-eval --dataset DIR --out DIR`: the room segmentation benchmark.
 Subcommand addSegmentEvalCommand(CLI::App& app);
+
+/// `roomscout slam --rawlog FILE --out DIR [--config YAML] [--mode M] [--seed N]`: a SLAM over
+/// a recorded laser log, its map beside the odometry's, and how well each fits the scans.
+Subcommand addSlamCommand(CLI::App& app);
 
 }  // namespace roomscout::cli

@@ -96,8 +96,7 @@ nlohmann::json metricsJson(const RunInfo& info, const sim::EpisodeResult& r) {
   return metrics;
 }
 
-cv::Mat renderRun(const sim::EpisodeResult& result) {
-  const OccupancyGrid& grid = result.map;
+cv::Mat renderMapWithPath(const OccupancyGrid& grid, const std::vector<Pose2>& path) {
   const GridGeometry& g = grid.geometry();
   const int scale = std::max(1, std::min(4, 1200 / std::max(1, std::max(g.width(), g.height()))));
   cv::Mat image(g.height(), g.width(), CV_8UC3);
@@ -123,18 +122,25 @@ cv::Mat renderRun(const sim::EpisodeResult& result) {
     const double py = (g.height() - (p.y_m - g.origin_m().y()) / g.resolution_m()) * scale;
     return cv::Point(static_cast<int>(std::lround(px)), static_cast<int>(std::lround(py)));
   };
-  for (std::size_t i = 1; i < result.trajectory.size(); ++i) {
-    cv::line(image, toPixel(result.trajectory[i - 1].pose), toPixel(result.trajectory[i].pose),
+  for (std::size_t i = 1; i < path.size(); ++i) {
+    cv::line(image, toPixel(path[i - 1]), toPixel(path[i]),
              cv::Scalar(200, 90, 20), std::max(1, scale / 2), cv::LINE_AA);
   }
-  if (!result.trajectory.empty()) {
+  if (!path.empty()) {
     const int r = 3 * scale;
-    cv::circle(image, toPixel(result.trajectory.front().pose), r, cv::Scalar(40, 170, 40),
+    cv::circle(image, toPixel(path.front()), r, cv::Scalar(40, 170, 40),
                cv::FILLED, cv::LINE_AA);
-    cv::circle(image, toPixel(result.trajectory.back().pose), r, cv::Scalar(30, 30, 220),
+    cv::circle(image, toPixel(path.back()), r, cv::Scalar(30, 30, 220),
                cv::FILLED, cv::LINE_AA);
   }
   return image;
+}
+
+cv::Mat renderRun(const sim::EpisodeResult& result) {
+  std::vector<Pose2> path;
+  path.reserve(result.trajectory.size());
+  for (const sim::TrajectorySample& s : result.trajectory) path.push_back(s.pose);
+  return renderMapWithPath(result.map, path);
 }
 
 void writeRunOutputs(const std::filesystem::path& directory, const RunInfo& info,

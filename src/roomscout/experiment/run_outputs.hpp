@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -26,8 +27,11 @@ struct RunInfo {
 /// metrics.json's content: the keys documented in the README.
 nlohmann::json metricsJson(const RunInfo& info, const sim::EpisodeResult& result);
 
-/// The final map with the trajectory (blue), start (green) and end (red) drawn, image row 0 at
-/// the top, scaled up so small maps stay legible.
+/// A map with a path (blue), its start (green) and end (red) drawn, image row 0 at the top,
+/// scaled up so small maps stay legible.
+cv::Mat renderMapWithPath(const OccupancyGrid& grid, const std::vector<Pose2>& path);
+
+/// renderMapWithPath of the final map and the trajectory.
 cv::Mat renderRun(const sim::EpisodeResult& result);
 
 /// Writes every output file into `directory` (created if needed). Throws InputError naming
