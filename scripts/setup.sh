@@ -8,7 +8,7 @@ cd "$(dirname "$0")/.."
 packages=(
   build-essential cmake pkg-config git ca-certificates
   libeigen3-dev libopencv-dev libopencv-contrib-dev libpcl-dev libmrpt-slam-dev libceres-dev
-  libyaml-cpp-dev nlohmann-json3-dev libcli11-dev
+  libyaml-cpp-dev nlohmann-json3-dev libcli11-dev zlib1g-dev
   libgtest-dev libgmock-dev libbenchmark-dev clang-format
   # report figures: Cairo draws them (PNG, SVG, PDF) in DejaVu Sans; the tests rasterise a
   # figure's PDF with poppler's pdftoppm

@@ -147,6 +147,7 @@ slam::SlamOptions slamOptionsFor(slam::SlamOptions options, const NoiseProfile& 
     options.odometry_rotation_sd_per_rad = noise.odometry.rotation_sd_per_rad;
   if (options.odometry_rotation_sd_per_m < 0.0)
     options.odometry_rotation_sd_per_m = noise.odometry.rotation_sd_per_m;
+  if (options.range_sd_fraction < 0.0) options.range_sd_fraction = noise.laser.sd_fraction;
   return options;
 }
 

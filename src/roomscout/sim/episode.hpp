@@ -153,8 +153,8 @@ using EpisodeProgress = std::function<void(double time_s, double max_time_s, dou
 /// `margin` cells, clipped to `full` (the simulator's mapper grid, the world's extent).
 GridGeometry publishedGeometry(const GridGeometry& full, const CellRect& known, int margin);
 
-/// The SLAM's options for a simulated robot with `noise`: an odometry model left automatic
-/// (-1) is the simulated odometry's.
+/// The SLAM's options for a simulated robot with `noise`: an odometry or range noise model
+/// left automatic (-1) is the simulated sensor's.
 slam::SlamOptions slamOptionsFor(slam::SlamOptions options, const NoiseProfile& noise);
 
 /// config.explorer, resolved for `world`: a stall threshold of 0 becomes 0.1 % of the floor the

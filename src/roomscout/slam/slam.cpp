@@ -52,7 +52,8 @@ void SlamOptions::validate() const {
   for (const auto& [name, value] :
        {std::pair{"odometry_sd_per_m", odometry_sd_per_m},
         std::pair{"odometry_rotation_sd_per_rad", odometry_rotation_sd_per_rad},
-        std::pair{"odometry_rotation_sd_per_m", odometry_rotation_sd_per_m}}) {
+        std::pair{"odometry_rotation_sd_per_m", odometry_rotation_sd_per_m},
+        std::pair{"range_sd_fraction", range_sd_fraction}}) {
     if (!std::isfinite(value) || (value < 0.0 && value != -1.0)) {
       throw OptionError(std::string("slam.") + name + " must be >= 0, or -1 for automatic");
     }
@@ -105,6 +106,10 @@ std::vector<ParameterRef> SlamOptions::parameters() {
       {"odometry_rotation_sd_per_m", &odometry_rotation_sd_per_m,
        "graph: the odometry's heading error after driving 1 m (sd) [rad]; -1: automatic as "
        "above, elsewhere 0.01"},
+      {"range_sd_fraction", &range_sd_fraction,
+       "graph: the laser's range noise (sd) as a fraction of the range, for fitting walls to "
+       "noisy returns; -1: in the simulator the simulated laser's (noise.profile), elsewhere "
+       "0.01"},
       {"loop_search_distance_m", &loop_search_distance_m,
        "graph: finished submaps with a node this close to a new node are searched for a loop "
        "closure [m]"},
@@ -211,6 +216,7 @@ detail::GraphSlamOptions graphOptions(const SlamOptions& o) {
   }
   if (o.odometry_rotation_sd_per_m >= 0.0)
     g.odometry_rotation_sd_per_m = o.odometry_rotation_sd_per_m;
+  if (o.range_sd_fraction >= 0.0) g.match.range_sd_fraction = o.range_sd_fraction;
   g.loop_search_distance_m = o.loop_search_distance_m;
   g.loop_window_m = o.loop_window_m;
   g.loop_window_rad = o.loop_window_deg * M_PI / 180.0;

@@ -46,6 +46,7 @@ struct SlamOptions {
   double odometry_sd_per_m = -1.0;  ///< < 0: automatic (see parameters())
   double odometry_rotation_sd_per_rad = -1.0;
   double odometry_rotation_sd_per_m = -1.0;
+  double range_sd_fraction = -1.0;  ///< < 0: automatic (see parameters())
   double loop_search_distance_m = 2.5;
   double loop_window_m = 1.0;
   double loop_window_deg = 20.0;

@@ -5,6 +5,8 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <cstdio>
+#include <cstdlib>
 
 #include "roomscout/slam/detail/pose_ops.hpp"
 
@@ -150,13 +152,18 @@ CellRect GraphSlam::update(const LaserScan& input, const Pose2& odometry) {
   const SubmapEntry& target = *submaps_[active_.front()];
   if (!points.empty()) {
     const Pose2 local_prediction = between(target.submap.global_pose, prediction);
-    const ScanMatch m =
-        matchScan(target.probability, points, local_prediction, sd_m, sd_rad, options_.match);
+    const ScanMatch m = matchScan(target.probability, target.submap.walls(), points,
+                                  local_prediction, local_prediction, sd_m, sd_rad, options_.match);
     const double shift =
         std::hypot(m.pose.x_m - local_prediction.x_m, m.pose.y_m - local_prediction.y_m);
     const double rotation = std::abs(wrapAngle(m.pose.yaw_rad - local_prediction.yaw_rad));
     const bool consistent = shift <= options_.max_innovation_sd * sd_m &&
                             rotation <= options_.max_innovation_sd * sd_rad;
+    if (std::getenv("RS_DEBUG"))
+      std::fprintf(stderr, "node %zu pred %.4f %.4f %.4f d %.4f %.4f %.4f acc %d deg %d pairs %d cons %d\n", nodes_.size(),
+                   local_prediction.x_m, local_prediction.y_m, local_prediction.yaw_rad,
+                   m.pose.x_m - local_prediction.x_m, m.pose.y_m - local_prediction.y_m, m.pose.yaw_rad - local_prediction.yaw_rad,
+                   m.accepted, m.degenerate, m.points_on_walls, consistent);
     if (m.accepted && consistent) {
       estimate = compose(target.submap.global_pose, m.pose);
       if (m.degenerate) ++stats_.matches_degenerate;
@@ -215,7 +222,7 @@ void GraphSlam::searchLoopClosures(int id) {
     if (!found) continue;
     // Refine from the search's answer (known to a cell), then verify. Where the walls leave
     // the pose free within their cells, the weak prior keeps it nearest the current estimate.
-    const ScanMatch m = matchScan(e.probability, node.points, found->pose, center,
+    const ScanMatch m = matchScan(e.probability, e.submap.walls(), node.points, found->pose, center,
                                   options_.loop_window_m, options_.loop_window_rad, options_.match);
     if (!m.accepted || m.degenerate || m.score < options_.loop_min_score) continue;
     graph_.addConstraint(

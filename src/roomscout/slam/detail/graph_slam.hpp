@@ -35,8 +35,8 @@ struct GraphSlamOptions {
   double odometry_sd_per_m = 0.02;
   double odometry_rotation_sd_per_rad = 0.03;
   double odometry_rotation_sd_per_m = 0.01;
-  double min_sd_m = 0.002;  ///< floor of the prior's sd
-  double min_sd_rad = 0.002;
+  double min_sd_m = 1e-4;  ///< floor of the prior's sd: exact odometry is trusted all but exactly
+  double min_sd_rad = 1e-4;
   double max_innovation_sd = 5.0;  ///< a match further from the prediction is rejected
   ScanMatchOptions match;
   // Loop closure.

@@ -1,7 +1,6 @@
 #include "roomscout/slam/detail/scan_matcher.hpp"
 
 #include <ceres/ceres.h>
-#include <ceres/cubic_interpolation.h>
 
 #include <Eigen/Eigenvalues>
 #include <algorithm>
@@ -13,112 +12,34 @@
 namespace roomscout::slam::detail {
 namespace {
 
-using Interpolator = ceres::BiCubicInterpolator<ProbabilityGrid>;
+/// A scan point paired with a wall: its distance to the wall's line (normal set) or to the
+/// wall point (normal zero).
+struct WallPair {
+  Vec2 point;  ///< sensor frame
+  Vec2 wall;   ///< a point of the wall, submap frame
+  Vec2 normal;
+};
 
-/// Residuals per point: how far the point lies outside the wall cell it was paired with, times
-/// `scale` / cell size. A wall's surface lies somewhere in the cell the map marked, so every
-/// position inside is equally right: the cost is flat there and the prior decides, with no
-/// pull towards the cell's centre. Where the cell's wall runs straight, only the distance
-/// across the wall counts (point to line): a point between two sparse hits of one wall, or
-/// past the end of the stretch the submap has seen, is not pulled along the wall.
-struct WallCellCost {
-  struct Pair {
-    Vec2 point;   ///< sensor frame
-    Vec2 centre;  ///< of the paired cell, grid frame
-    Vec2 normal;  ///< across the wall (unit), or zero where the wall's direction is unclear
-  };
-  const std::vector<Pair>& pairs;
-  double half_cell;
+/// Per pair: the point's distance to its wall's line, in cells, times `scale`.
+struct WallCost {
+  const std::vector<WallPair>& pairs;
   double scale;
-
-  template <typename T>
-  static T outside(const T& d, double half) {
-    if (d > half) return d - half;
-    if (d < -half) return d + half;
-    return T(0.0);
-  }
 
   template <typename T>
   bool operator()(const T* const pose, T* residuals) const {
     const T c = ceres::cos(pose[2]);
     const T s = ceres::sin(pose[2]);
     for (std::size_t i = 0; i < pairs.size(); ++i) {
-      const Pair& pair = pairs[i];
+      const WallPair& pair = pairs[i];
       const Vec2& p = pair.point;
-      const T dx = pose[0] + c * p.x() - s * p.y() - pair.centre.x();
-      const T dy = pose[1] + s * p.x() + c * p.y() - pair.centre.y();
-      if (pair.normal.isZero()) {
-        residuals[2 * i] = scale * outside(dx, half_cell);
-        residuals[2 * i + 1] = scale * outside(dy, half_cell);
-      } else {
-        // The cell's extent across the wall: half a cell projected on the normal.
-        const double half = half_cell * (std::abs(pair.normal.x()) + std::abs(pair.normal.y()));
-        residuals[2 * i] = scale * outside(dx * pair.normal.x() + dy * pair.normal.y(), half);
-        residuals[2 * i + 1] = T(0.0);
-      }
+      const T x = pose[0] + c * p.x() - s * p.y();
+      const T y = pose[1] + s * p.x() + c * p.y();
+      residuals[i] = scale * ((x - pair.wall.x()) * pair.normal.x() +
+                              (y - pair.wall.y()) * pair.normal.y());
     }
     return true;
   }
 };
-
-/// The direction across the wall through cell `c`, from the wall cells round it (their
-/// principal axis); zero where they do not line up (a corner, a lone cell).
-Vec2 wallNormal(const ProbabilityGrid& grid, Cell c) {
-  constexpr int kRadius = 2;
-  Eigen::Vector2d mean = Eigen::Vector2d::Zero();
-  std::vector<Eigen::Vector2d> cells;
-  for (int dy = -kRadius; dy <= kRadius; ++dy)
-    for (int dx = -kRadius; dx <= kRadius; ++dx)
-      if (grid.at(c.x + dx, c.y + dy) > 0.5) {
-        cells.emplace_back(dx, dy);
-        mean += cells.back();
-      }
-  if (cells.size() < 3) return Vec2::Zero();
-  mean /= static_cast<double>(cells.size());
-  Eigen::Matrix2d scatter = Eigen::Matrix2d::Zero();
-  for (const Eigen::Vector2d& v : cells) scatter += (v - mean) * (v - mean).transpose();
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eigen(scatter);
-  // A line: the spread across it is small against the spread along it.
-  if (eigen.eigenvalues()(0) > 0.1 * eigen.eigenvalues()(1)) return Vec2::Zero();
-  return eigen.eigenvectors().col(0).normalized();
-}
-
-/// Pairs each point (at `pose`) with the nearest cell more likely occupied than not within
-/// `reach` cells; points with none are left out.
-std::vector<WallCellCost::Pair> pairWithWalls(const ProbabilityGrid& grid,
-                                              const std::vector<Vec2>& points, const Pose2& pose,
-                                              int reach) {
-  std::vector<WallCellCost::Pair> pairs;
-  pairs.reserve(points.size());
-  const GridGeometry& g = grid.geometry();
-  const double half = 0.5 * g.resolution_m();
-  for (const Vec2& p : points) {
-    const Vec2 q = apply(pose, p);
-    const Cell c = g.cellOf(q);
-    double best = std::numeric_limits<double>::infinity();
-    Cell best_cell{};
-    for (int dy = -reach; dy <= reach; ++dy) {
-      for (int dx = -reach; dx <= reach; ++dx) {
-        if (grid.at(c.x + dx, c.y + dy) <= 0.5) continue;
-        const Vec2 centre = g.centerOf(Cell{c.x + dx, c.y + dy});
-        const double ox = std::max(0.0, std::abs(q.x() - centre.x()) - half);
-        const double oy = std::max(0.0, std::abs(q.y() - centre.y()) - half);
-        const double d = ox * ox + oy * oy;
-        if (d < best) {
-          best = d;
-          best_cell = Cell{c.x + dx, c.y + dy};
-        }
-      }
-    }
-    if (!std::isfinite(best)) continue;
-    const Vec2 normal = wallNormal(grid, best_cell);
-    // Where the wall's direction is unclear (its end, a corner), only a point close to the
-    // cell is paired: one further off is more likely on a stretch the submap has not seen.
-    if (normal.isZero() && best > half * half) continue;
-    pairs.push_back({p, g.centerOf(best_cell), normal});
-  }
-  return pairs;
-}
 
 /// The pose staying near the prediction: (pose - prediction) / sd per axis.
 struct PriorCost {
@@ -133,6 +54,83 @@ struct PriorCost {
   }
 };
 
+/// A wall cell seen from the side the beam `beam` comes from.
+bool isWall(const ProbabilityGrid& grid, const WallPoints& walls, int x, int y,
+            const Vec2& beam) {
+  return walls.count(x, y) > 0 && grid.at(x, y) > 0.5 && walls.beams(x, y).dot(beam) > 0.0;
+}
+
+/// The wall through cell `c`: the line fitted to the wall points round it (weighted by their
+/// returns), within a window wide enough for returns with range noise `sd_m` to line up; none
+/// (zero normal) where they do not: a corner, a lone wall point.
+WallPair wallAt(const ProbabilityGrid& grid, const WallPoints& walls, Cell c, const Vec2& point,
+                const Vec2& beam, double sd_m) {
+  const double res = walls.geometry().resolution_m();
+  const int radius = std::clamp(static_cast<int>(std::ceil(3.0 * sd_m / res)), 3, 8);
+  Eigen::Vector2d sum = Eigen::Vector2d::Zero();
+  double weight = 0.0;
+  int cells = 0;
+  for (int dy = -radius; dy <= radius; ++dy)
+    for (int dx = -radius; dx <= radius; ++dx)
+      if (isWall(grid, walls, c.x + dx, c.y + dy, beam)) {
+        const double w = walls.count(c.x + dx, c.y + dy);
+        sum += w * walls.mean(c.x + dx, c.y + dy);
+        weight += w;
+        ++cells;
+      }
+  if (cells < 3) return {point, Vec2::Zero(), Vec2::Zero()};
+  const Eigen::Vector2d centroid = sum / weight;
+  Eigen::Matrix2d scatter = Eigen::Matrix2d::Zero();
+  for (int dy = -radius; dy <= radius; ++dy)
+    for (int dx = -radius; dx <= radius; ++dx)
+      if (isWall(grid, walls, c.x + dx, c.y + dy, beam)) {
+        const Eigen::Vector2d d = walls.mean(c.x + dx, c.y + dy) - centroid;
+        scatter += walls.count(c.x + dx, c.y + dy) * d * d.transpose();
+      }
+  scatter /= weight;
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eigen(scatter);
+  const double across = eigen.eigenvalues()(0), along = eigen.eigenvalues()(1);
+  // A line: spread along it, and across it no more than a small part of that or than the
+  // range noise explains.
+  const bool noisy = sd_m > 0.0 && across <= 4.0 * sd_m * sd_m;
+  const bool line = along >= (noisy ? 2.0 : 4.0) * across && (across <= 0.15 * along || noisy);
+  if (!line) return {point, Vec2::Zero(), Vec2::Zero()};
+  return {point, centroid, eigen.eigenvectors().col(0).normalized()};
+}
+
+/// Pairs each point (at `pose`) with the nearest wall point within `reach` cells; points with
+/// none are left out (ground the submap has not seen has nothing to match).
+std::vector<WallPair> pairWithWalls(const ProbabilityGrid& grid, const WallPoints& walls,
+                                    const std::vector<Vec2>& points, const Pose2& pose,
+                                    int reach, double range_sd_fraction) {
+  std::vector<WallPair> pairs;
+  pairs.reserve(points.size());
+  const GridGeometry& g = walls.geometry();
+  for (const Vec2& p : points) {
+    const Vec2 q = apply(pose, p);
+    const Vec2 beam = q - pose.position();
+    const Cell c = g.cellOf(q);
+    double best = std::numeric_limits<double>::infinity();
+    Cell best_cell{};
+    for (int dy = -reach; dy <= reach; ++dy) {
+      for (int dx = -reach; dx <= reach; ++dx) {
+        if (!isWall(grid, walls, c.x + dx, c.y + dy, beam)) continue;
+        const double d = (walls.mean(c.x + dx, c.y + dy) - q).squaredNorm();
+        if (d < best) {
+          best = d;
+          best_cell = Cell{c.x + dx, c.y + dy};
+        }
+      }
+    }
+    if (!std::isfinite(best)) continue;
+    // Only walls that run straight are matched: a lone wall point (seen through sparse grazing
+    // beams, the end of what the submap has seen, a corner) would pull the scan along a wall.
+    const WallPair pair = wallAt(grid, walls, best_cell, p, beam, range_sd_fraction * p.norm());
+    if (!pair.normal.isZero()) pairs.push_back(pair);
+  }
+  return pairs;
+}
+
 }  // namespace
 
 double scoreAt(const ProbabilityGrid& grid, const std::vector<Vec2>& points, const Pose2& pose) {
@@ -142,35 +140,28 @@ double scoreAt(const ProbabilityGrid& grid, const std::vector<Vec2>& points, con
   return sum / static_cast<double>(points.size());
 }
 
-ScanMatch matchScan(const ProbabilityGrid& grid, const std::vector<Vec2>& points,
-                    const Pose2& prediction, double sd_m, double sd_rad,
-                    const ScanMatchOptions& options) {
-  return matchScan(grid, points, prediction, prediction, sd_m, sd_rad, options);
-}
-
-ScanMatch matchScan(const ProbabilityGrid& grid, const std::vector<Vec2>& points,
-                    const Pose2& initial, const Pose2& prediction, double sd_m, double sd_rad,
-                    const ScanMatchOptions& options) {
+ScanMatch matchScan(const ProbabilityGrid& grid, const WallPoints& walls,
+                    const std::vector<Vec2>& points, const Pose2& initial, const Pose2& prediction,
+                    double sd_m, double sd_rad, const ScanMatchOptions& options) {
   ScanMatch result;
   result.pose = prediction;
   if (points.empty()) return result;
-  const Interpolator interpolator(grid);
-  const double res = grid.geometry().resolution_m();
-  constexpr int kReach = 3;  ///< cells searched round a point for its wall cell
+  const double res = walls.geometry().resolution_m();
+  constexpr int kReach = 3;  ///< cells searched round a point for its wall
 
-  // Pair points with wall cells, solve, pair again from the solution (as ICP does).
+  // Pair points with walls, solve, pair again from the solution (as ICP does).
   double pose[3] = {initial.x_m, initial.y_m, initial.yaw_rad};
+  std::vector<WallPair> pairs;
   for (int round = 0; round < 3; ++round) {
-    const std::vector<WallCellCost::Pair> pairs =
-        pairWithWalls(grid, points, Pose2{pose[0], pose[1], pose[2]}, kReach);
+    pairs = pairWithWalls(grid, walls, points, Pose2{pose[0], pose[1], pose[2]}, kReach,
+                          options.range_sd_fraction);
     if (pairs.size() < static_cast<std::size_t>(options.min_points_on_walls)) return result;
     ceres::Problem problem;
     const double scale =
         options.occupied_weight / (res * std::sqrt(static_cast<double>(pairs.size())));
-    problem.AddResidualBlock(
-        new ceres::AutoDiffCostFunction<WallCellCost, ceres::DYNAMIC, 3>(
-            new WallCellCost{pairs, 0.5 * res, scale}, static_cast<int>(2 * pairs.size())),
-        nullptr, pose);
+    problem.AddResidualBlock(new ceres::AutoDiffCostFunction<WallCost, ceres::DYNAMIC, 3>(
+                                 new WallCost{pairs, scale}, static_cast<int>(pairs.size())),
+                             nullptr, pose);
     problem.AddResidualBlock(new ceres::AutoDiffCostFunction<PriorCost, 3, 3>(
                                  new PriorCost{prediction, 1.0 / sd_m, 1.0 / sd_rad}),
                              nullptr, pose);
@@ -185,23 +176,10 @@ ScanMatch matchScan(const ProbabilityGrid& grid, const std::vector<Vec2>& points
   Pose2 refined{pose[0], pose[1], wrapAngle(pose[2])};
   if (!isFinite(refined)) return result;
 
-  // Information of the point term about the translation, at the refined pose: the sum of
-  // g g^T over the points' probability gradients g.
+  // Information of the pairs about the translation: n n^T per line.
   Eigen::Matrix2d information = Eigen::Matrix2d::Zero();
-  int on_walls = 0;
-  const Vec2 origin = grid.geometry().origin_m();
-  for (const Vec2& p : points) {
-    const Vec2 q = apply(refined, p);
-    double value, d_row, d_col;
-    interpolator.Evaluate((q.y() - origin.y()) / res - 0.5, (q.x() - origin.x()) / res - 0.5,
-                          &value, &d_row, &d_col);
-    const Eigen::Vector2d g(d_col / res, d_row / res);
-    information += g * g.transpose();
-    if (grid.atPoint(q) > 0.5) ++on_walls;
-  }
-  result.points_on_walls = on_walls;
-  if (on_walls < options.min_points_on_walls) return result;
-
+  for (const WallPair& pair : pairs) information += pair.normal * pair.normal.transpose();
+  result.points_on_walls = static_cast<int>(pairs.size());
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eigen(information);
   const Eigen::Vector2d lambda = eigen.eigenvalues();  // ascending
   if (!(lambda(1) > 0.0)) return result;
