@@ -30,14 +30,27 @@ int runSlam(const SlamArgs& args) {
   OccupancyGridOptions grid_options;
   std::vector<ParameterGroup> groups{{"slam", slam_options.parameters()},
                                      {"mapping", grid_options.parameters()}};
-  if (!args.config.empty()) io::applyConfigFile(args.config, groups);
-  if (!args.mode.empty()) slam_options.mode = args.mode;
+  if (!args.config.empty()) {
+    io::applyConfigFile(args.config, groups);
+    try {
+      slam_options.validate();
+      grid_options.validate();
+    } catch (const OptionError& e) {
+      throw OptionError(args.config + ": " + e.what());
+    }
+  }
+  if (!args.mode.empty()) {
+    slam_options.mode = args.mode;
+    try {
+      slam_options.validate();
+    } catch (const OptionError& e) {
+      throw OptionError(std::string("--mode: ") + e.what());
+    }
+  }
   if (slam_options.mode == "none") {
     throw OptionError("roomscout slam needs a SLAM: give --mode or slam.mode in --config "
                       "(`roomscout options` lists the modes)");
   }
-  slam_options.validate();
-  grid_options.validate();
   io::OutputDirectory out(args.out);  // removed again if the command fails and it is empty
 
   experiment::RawlogRunInfo info;

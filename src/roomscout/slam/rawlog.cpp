@@ -144,6 +144,11 @@ class RawlogParser {
       for (const CObservation::Ptr& o : *frame) {
         if (o) takeObservation(*o, offset);
       }
+    } else if (const auto* rawlog = dynamic_cast<const CRawlog*>(&object)) {
+      // A whole CRawlog serialised as one object: its entries in order.
+      for (std::size_t i = 0; i < rawlog->size(); ++i) {
+        if (const auto entry = rawlog->getAsGeneric(i)) take(*entry, offset);
+      }
     } else if (const auto* observation = dynamic_cast<const CObservation*>(&object)) {
       log_.observations_only = true;
       takeObservation(*observation, offset);

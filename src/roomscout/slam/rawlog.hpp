@@ -41,7 +41,8 @@ struct Rawlog {
 /// Reads an MRPT rawlog, gzip-compressed or not, in either of MRPT's formats: pairs of
 /// CActionCollection (odometry increments, CActionRobotMovement2D) and CSensoryFrame
 /// (observations), or a sequence of observations (CObservation2DRangeScan and
-/// CObservationOdometry, whose absolute readings are taken relative to the first). Every
+/// CObservationOdometry, whose absolute readings are taken relative to the first); either
+/// format may also come as one serialised CRawlog object. Every
 /// CObservation2DRangeScan becomes a RawlogScan, with the odometry accumulated up to it;
 /// other observations are skipped.
 /// Throws InputError(path, problem) when the file is missing or unreadable, is a truncated
