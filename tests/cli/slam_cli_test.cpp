@@ -49,8 +49,8 @@ TEST(SlamCliTest, NeedsASlamModeAndRejectsAnUnknownOne) {
   EXPECT_TRUE(Contains(unknown.output, "fastslam"));
   // From a config file: the file and the key are named.
   const fs::path config = dir.write("c.yaml", "slam:\n  particles: 0\n");
-  const test::CommandResult bad = test::runRoomscout(
-      base + " --mode rbpf --config " + config.string(), dir.path());
+  const test::CommandResult bad =
+      test::runRoomscout(base + " --mode rbpf --config " + config.string(), dir.path());
   EXPECT_EQ(bad.exit_code, 2) << bad.output;
   EXPECT_TRUE(Contains(bad.output, config.string() + ": slam.particles"));
   const fs::path typo = dir.write("t.yaml", "slam:\n  mdoe: icp\n");

@@ -38,8 +38,7 @@ std::string readMaybeGzip(const std::filesystem::path& path) {
       int code = 0;
       const std::string message = gzerror(file, &code);
       gzclose(file);
-      throw InputError(path.string(),
-                       "truncated or corrupt gzip stream (zlib: " + message + ")");
+      throw InputError(path.string(), "truncated or corrupt gzip stream (zlib: " + message + ")");
     }
     if (n == 0) break;
     bytes.append(buffer, static_cast<std::size_t>(n));

@@ -29,12 +29,12 @@ struct RawlogScan {
 /// The scans of one log and what the reader found in it.
 struct Rawlog {
   std::vector<RawlogScan> scans;
-  std::size_t entries = 0;            ///< top-level objects in the file
-  bool observations_only = false;     ///< true: the log's observation-only format (odometry
-                                      ///< from CObservationOdometry), false: action-observation
-  std::size_t odometry_readings = 0;  ///< odometry increments (or readings) applied
-  std::size_t invalid_beams = 0;      ///< beams flagged invalid or beyond the maximum range
-  std::size_t corrupt_beams = 0;      ///< NaN, negative or -inf ranges
+  std::size_t entries = 0;                ///< top-level objects in the file
+  bool observations_only = false;         ///< true: the log's observation-only format (odometry
+                                          ///< from CObservationOdometry), false: action-observation
+  std::size_t odometry_readings = 0;      ///< odometry increments (or readings) applied
+  std::size_t invalid_beams = 0;          ///< beams flagged invalid or beyond the maximum range
+  std::size_t corrupt_beams = 0;          ///< NaN, negative or -inf ranges
   std::size_t scans_without_returns = 0;  ///< scans whose every beam is invalid or corrupt
 };
 
