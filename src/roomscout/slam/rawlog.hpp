@@ -35,7 +35,7 @@ struct Rawlog {
   std::size_t odometry_readings = 0;      ///< odometry increments (or readings) applied
   std::size_t invalid_beams = 0;          ///< beams flagged invalid or beyond the maximum range
   std::size_t corrupt_beams = 0;          ///< NaN, negative or -inf ranges
-  std::size_t scans_without_returns = 0;  ///< scans whose every beam is invalid or corrupt
+  std::size_t scans_without_returns = 0;  ///< scans without a single valid range
 };
 
 /// Reads an MRPT rawlog, gzip-compressed or not, in either of MRPT's formats: pairs of
@@ -48,7 +48,7 @@ struct Rawlog {
 /// Throws InputError(path, problem) when the file is missing or unreadable, is a truncated
 /// gzip stream, holds something other than MRPT serialised objects, ends in the middle of
 /// one, holds no 2D laser scan, or has an odometry increment or reading that is not finite,
-/// or a scan of fewer than two beams or a non-finite aperture or maximum range.
+/// or a scan of fewer than two beams or with a non-finite aperture, maximum range or sensor pose.
 Rawlog readRawlog(const std::filesystem::path& path);
 
 }  // namespace roomscout::slam
