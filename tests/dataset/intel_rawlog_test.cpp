@@ -67,10 +67,10 @@ TEST(IntelRawlogTest, SlamMapFitsTheScansBetterThanOdometry) {
   test::TempDir dir;
   const fs::path out = dir / "intel";
   const std::string mode = bestSlamMode();
-  const test::CommandResult r = test::runRoomscout(
-      "slam --rawlog " + (data / "slam" / "intel.rawlog").string() + " --out " + out.string() +
-          " --mode " + mode + " --seed 1",
-      dir.path());
+  const test::CommandResult r =
+      test::runRoomscout("slam --rawlog " + (data / "slam" / "intel.rawlog").string() + " --out " +
+                             out.string() + " --mode " + mode + " --seed 1",
+                         dir.path());
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_TRUE(test::Contains(r.output, "2726 scans"));
   for (const char* name : {"map.pgm", "map.yaml", "map.png", "odometry_map.pgm",

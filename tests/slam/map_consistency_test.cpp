@@ -13,7 +13,8 @@ namespace {
 /// A 10 m x 10 m map at 0.05 m with one occupied column of cells at x in [5.0, 5.05).
 OccupancyGrid wallMap() {
   OccupancyGrid grid(GridGeometry(Vec2::Zero(), 0.05, 200, 200));
-  for (int y = 0; y < 200; ++y) grid.setState(grid.geometry().index(Cell{100, y}), CellState::kOccupied);
+  for (int y = 0; y < 200; ++y)
+    grid.setState(grid.geometry().index(Cell{100, y}), CellState::kOccupied);
   return grid;
 }
 
@@ -35,9 +36,8 @@ TEST(MapConsistencyTest, PointsOnTheWallAreAtZeroAndPointsOffItAtTheirDistance) 
   ASSERT_TRUE(on.mean_distance_m);
   EXPECT_DOUBLE_EQ(*on.mean_distance_m, 0.0);
   EXPECT_EQ(on.points, 1u);
-  const MapConsistency off =
-      mapConsistency(map, {oneBeam(4.02f), oneBeam(3.02f)},
-                     {Pose2{1.0, 5.0, 0.0}, Pose2{1.0, 5.0, 0.0}}, 30.0);
+  const MapConsistency off = mapConsistency(map, {oneBeam(4.02f), oneBeam(3.02f)},
+                                            {Pose2{1.0, 5.0, 0.0}, Pose2{1.0, 5.0, 0.0}}, 30.0);
   ASSERT_TRUE(off.mean_distance_m);
   EXPECT_NEAR(*off.mean_distance_m, 0.5, 0.01);  // (0 + 1 m) / 2
   EXPECT_EQ(off.points, 2u);
@@ -66,7 +66,8 @@ TEST(MapConsistencyTest, CountsPointsOffTheMapApartAndHasNoFigureForAMapWithoutW
   EXPECT_EQ(c.outside_points, 1u);
   EXPECT_EQ(c.points, 0u);
   const OccupancyGrid empty(GridGeometry(Vec2::Zero(), 0.05, 20, 20));
-  EXPECT_FALSE(mapConsistency(empty, {oneBeam(0.5f)}, {Pose2{0.2, 0.2, 0.0}}, 30.0).mean_distance_m);
+  EXPECT_FALSE(
+      mapConsistency(empty, {oneBeam(0.5f)}, {Pose2{0.2, 0.2, 0.0}}, 30.0).mean_distance_m);
 }
 
 TEST(MapConsistencyTest, RefusesScansAndPosesOfDifferentCounts) {

@@ -9,6 +9,7 @@
 #include <mrpt/obs/CActionRobotMovement2D.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/obs/CObservationOdometry.h>
+#include <mrpt/obs/CRawlog.h>
 #include <mrpt/obs/CSensoryFrame.h>
 #include <mrpt/poses/CPose3D.h>
 #include <mrpt/serialization/CArchive.h>
@@ -138,6 +139,27 @@ TEST(RawlogTest, ReadsAnUncompressedLogAndPutsTheFirstScanAtTheOrigin) {
   // The robot drives 3 m before the first scan: odometry starts there.
   writeDrive<mrpt::io::CFileOutputStream>(path, 4, true, 3.0);
   expectDrive(readRawlog(path), 4);
+}
+
+TEST(RawlogTest, ReadsALogSavedAsOneCRawlogObject) {
+  TempDir dir;
+  const auto path = dir / "object.rawlog";
+  mrpt::obs::CRawlog rawlog;
+  for (int k = 0; k < 3; ++k) {
+    mrpt::obs::CActionCollection actions = odometryIncrement(k == 0 ? 0.0 : kStep_m);
+    rawlog.insert(actions);
+    mrpt::obs::CSensoryFrame frame;
+    frame.insert(makeScan(k * kStep_m));
+    rawlog.insert(frame);
+  }
+  {
+    mrpt::io::CFileGZOutputStream stream(path.string());
+    auto out = mrpt::serialization::archiveFrom(stream);
+    out << rawlog;
+  }
+  const Rawlog log = readRawlog(path);
+  EXPECT_EQ(log.entries, 1u);
+  expectDrive(log, 3);
 }
 
 TEST(RawlogTest, ReversesLeftToRightScans) {

@@ -4,7 +4,7 @@
 #include <chrono>
 #include <cstdio>
 #include <memory>
-#include <optional>
+#include <string>
 
 #include "roomscout/cli/map_commands.hpp"
 #include "roomscout/core/errors.hpp"
@@ -30,14 +30,28 @@ int runSlam(const SlamArgs& args) {
   OccupancyGridOptions grid_options;
   std::vector<ParameterGroup> groups{{"slam", slam_options.parameters()},
                                      {"mapping", grid_options.parameters()}};
-  if (!args.config.empty()) io::applyConfigFile(args.config, groups);
-  if (!args.mode.empty()) slam_options.mode = args.mode;
-  if (slam_options.mode == "none") {
-    throw OptionError("roomscout slam needs a SLAM: give --mode or slam.mode in --config "
-                      "(`roomscout options` lists the modes)");
+  if (!args.config.empty()) {
+    io::applyConfigFile(args.config, groups);
+    try {
+      slam_options.validate();
+      grid_options.validate();
+    } catch (const OptionError& e) {
+      throw OptionError(args.config + ": " + e.what());
+    }
   }
-  slam_options.validate();
-  grid_options.validate();
+  if (!args.mode.empty()) {
+    slam_options.mode = args.mode;
+    try {
+      slam_options.validate();
+    } catch (const OptionError& e) {
+      throw OptionError(std::string("--mode: ") + e.what());
+    }
+  }
+  if (slam_options.mode == "none") {
+    throw OptionError(
+        "roomscout slam needs a SLAM: give --mode or slam.mode in --config "
+        "(`roomscout options` lists the modes)");
+  }
   io::OutputDirectory out(args.out);  // removed again if the command fails and it is empty
 
   experiment::RawlogRunInfo info;
@@ -48,19 +62,20 @@ int runSlam(const SlamArgs& args) {
   info.read_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const experiment::RawlogSlamResult result =
       experiment::runRawlogSlam(log, slam_options, grid_options, args.seed, args.rawlog);
-  info.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  info.wall_time_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   experiment::writeRawlogOutputs(args.out, info, log, result);
 
   auto metres = [](const slam::MapConsistency& c) {
     return c.mean_distance_m ? formatString("%.3f m", *c.mean_distance_m) : std::string("n/a");
   };
-  std::printf("%s %s seed %llu: %zu scans, %.1f s wall, update median %.2f ms p95 %.2f ms, "
-              "consistency %s (odometry %s) -> %s\n",
-              args.rawlog.c_str(), result.mode.c_str(),
-              static_cast<unsigned long long>(args.seed), log.scans.size(), info.wall_time_s,
-              result.update.median_ms, result.update.p95_ms,
-              metres(result.slam_map.consistency).c_str(),
-              metres(result.odometry_map.consistency).c_str(), args.out.c_str());
+  std::printf(
+      "%s %s seed %llu: %zu scans, %.1f s wall, update median %.2f ms p95 %.2f ms, "
+      "consistency %s (odometry %s) -> %s\n",
+      args.rawlog.c_str(), result.mode.c_str(), static_cast<unsigned long long>(args.seed),
+      log.scans.size(), info.wall_time_s, result.update.median_ms, result.update.p95_ms,
+      metres(result.slam_map.consistency).c_str(), metres(result.odometry_map.consistency).c_str(),
+      args.out.c_str());
   out.keep();
   return 0;
 }

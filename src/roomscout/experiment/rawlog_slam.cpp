@@ -86,8 +86,8 @@ GridGeometry fittingGeometry(const std::vector<LaserScan>& scans,
 RawlogMap buildMap(const std::vector<LaserScan>& scans, const std::vector<Pose2>& T_map_laser,
                    const OccupancyGridOptions& options, const std::string& source) {
   RawlogMap map;
-  map.grid = OccupancyGrid(fittingGeometry(scans, T_map_laser, options.resolution_m, source),
-                           options);
+  map.grid =
+      OccupancyGrid(fittingGeometry(scans, T_map_laser, options.resolution_m, source), options);
   OccupancyMapper mapper(map.grid);
   for (std::size_t i = 0; i < scans.size(); ++i) mapper.integrate(scans[i], T_map_laser[i]);
   map.consistency = slam::mapConsistency(map.grid, scans, T_map_laser, kRawlogMaxRange_m);
@@ -141,8 +141,8 @@ RawlogSlamResult runRawlogSlam(const slam::Rawlog& log, const slam::SlamOptions&
   // return is tied to the last scan the SLAM saw (or the start) by odometry.
   const auto slam_start = Clock::now();
   slam::Slam slam(options, T_odom_laser.front(), seed);
-  std::vector<std::size_t> update_of(n);     // the SLAM update of each scan, or kNone
-  std::vector<std::size_t> anchor_of(n);     // the scan it is tied to by odometry, or kNone
+  std::vector<std::size_t> update_of(n);  // the SLAM update of each scan, or kNone
+  std::vector<std::size_t> anchor_of(n);  // the scan it is tied to by odometry, or kNone
   constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
   std::size_t last_updated = kNone;
   for (std::size_t i = 0; i < n; ++i) {
@@ -208,8 +208,8 @@ nlohmann::json rawlogSummaryJson(const RawlogRunInfo& info, const slam::Rawlog& 
       {"read_s", info.read_s},
       {"slam_s", r.slam_s},
       {"maps_s", r.maps_s},
-      {"update_ms", {{"median", r.update.median_ms}, {"p95", r.update.p95_ms},
-                     {"count", r.update.count}}},
+      {"update_ms",
+       {{"median", r.update.median_ms}, {"p95", r.update.p95_ms}, {"count", r.update.count}}},
       {"consistency_max_range_m", kRawlogMaxRange_m},
       {"maps", {{"slam", mapJson(r.slam_map)}, {"odometry", mapJson(r.odometry_map)}}},
       {"options", info.options},

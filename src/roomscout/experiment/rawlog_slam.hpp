@@ -29,16 +29,17 @@ struct RawlogMap {
   slam::MapConsistency consistency;
 };
 
+/// What a SLAM made of a log, beside what odometry alone makes of it.
 struct RawlogSlamResult {
-  std::string mode;                    ///< slam.mode
-  std::vector<Pose2> T_odom_robot;     ///< per scan, as the log has it
-  std::vector<Pose2> T_map_robot;      ///< per scan, the SLAM's estimate after finish()
-  std::size_t slam_updates = 0;        ///< scans given to the SLAM (those with a return)
-  RawlogMap slam_map;                  ///< every scan at T_map_robot
-  RawlogMap odometry_map;              ///< every scan at T_odom_robot
-  sim::TimingStats update;             ///< Slam::update() per scan
-  double slam_s = 0.0;                 ///< wall time of every update() and finish()
-  double maps_s = 0.0;                 ///< wall time of both maps and their figures
+  std::string mode;                 ///< slam.mode
+  std::vector<Pose2> T_odom_robot;  ///< per scan, as the log has it
+  std::vector<Pose2> T_map_robot;   ///< per scan, the SLAM's estimate after finish()
+  std::size_t slam_updates = 0;     ///< scans given to the SLAM (those with a return)
+  RawlogMap slam_map;               ///< every scan at the SLAM's final pose of its laser
+  RawlogMap odometry_map;           ///< every scan at the odometry's pose of its laser
+  sim::TimingStats update;          ///< Slam::update() per scan
+  double slam_s = 0.0;              ///< wall time of every update() and finish()
+  double maps_s = 0.0;              ///< wall time of both maps and their consistency
 };
 
 /// Runs a SLAM in `options.mode` (not "none") over `log`, seeded with `seed`: scans without a
@@ -54,11 +55,11 @@ RawlogSlamResult runRawlogSlam(const slam::Rawlog& log, const slam::SlamOptions&
 
 /// What summary.json records besides the result.
 struct RawlogRunInfo {
-  std::string rawlog;       ///< the log's path
+  std::string rawlog;  ///< the log's path
   std::uint64_t seed = 0;
-  nlohmann::json options;   ///< resolved options, {group: {name: value}}
-  double read_s = 0.0;      ///< wall time of reading the log
-  double wall_time_s = 0.0; ///< the whole command, reading included
+  nlohmann::json options;    ///< resolved options, {group: {name: value}}
+  double read_s = 0.0;       ///< wall time of reading the log
+  double wall_time_s = 0.0;  ///< the whole command, reading included
 };
 
 /// summary.json's content (docs/slam.md, "Real logs").

@@ -123,15 +123,13 @@ cv::Mat renderMapWithPath(const OccupancyGrid& grid, const std::vector<Pose2>& p
     return cv::Point(static_cast<int>(std::lround(px)), static_cast<int>(std::lround(py)));
   };
   for (std::size_t i = 1; i < path.size(); ++i) {
-    cv::line(image, toPixel(path[i - 1]), toPixel(path[i]),
-             cv::Scalar(200, 90, 20), std::max(1, scale / 2), cv::LINE_AA);
+    cv::line(image, toPixel(path[i - 1]), toPixel(path[i]), cv::Scalar(200, 90, 20),
+             std::max(1, scale / 2), cv::LINE_AA);
   }
   if (!path.empty()) {
     const int r = 3 * scale;
-    cv::circle(image, toPixel(path.front()), r, cv::Scalar(40, 170, 40),
-               cv::FILLED, cv::LINE_AA);
-    cv::circle(image, toPixel(path.back()), r, cv::Scalar(30, 30, 220),
-               cv::FILLED, cv::LINE_AA);
+    cv::circle(image, toPixel(path.front()), r, cv::Scalar(40, 170, 40), cv::FILLED, cv::LINE_AA);
+    cv::circle(image, toPixel(path.back()), r, cv::Scalar(30, 30, 220), cv::FILLED, cv::LINE_AA);
   }
   return image;
 }

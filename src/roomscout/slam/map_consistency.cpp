@@ -1,6 +1,9 @@
 #include "roomscout/slam/map_consistency.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <string>
 
 #include <opencv2/imgproc.hpp>
 

@@ -12,6 +12,7 @@
 
 namespace roomscout::slam {
 
+/// The consistency figure of one map.
 struct MapConsistency {
   /// Mean distance from each scan point to the nearest occupied cell of the map [m] (cell
   /// centre to cell centre, Euclidean); empty when no point was counted or the map has no

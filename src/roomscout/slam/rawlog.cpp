@@ -38,8 +38,7 @@ std::string readMaybeGzip(const std::filesystem::path& path) {
       int code = 0;
       const std::string message = gzerror(file, &code);
       gzclose(file);
-      throw InputError(path.string(),
-                       "truncated or corrupt gzip stream (zlib: " + message + ")");
+      throw InputError(path.string(), "truncated or corrupt gzip stream (zlib: " + message + ")");
     }
     if (n == 0) break;
     bytes.append(buffer, static_cast<std::size_t>(n));
@@ -143,6 +142,11 @@ class RawlogParser {
     } else if (const auto* frame = dynamic_cast<const CSensoryFrame*>(&object)) {
       for (const CObservation::Ptr& o : *frame) {
         if (o) takeObservation(*o, offset);
+      }
+    } else if (const auto* rawlog = dynamic_cast<const CRawlog*>(&object)) {
+      // A whole CRawlog serialised as one object: its entries in order.
+      for (std::size_t i = 0; i < rawlog->size(); ++i) {
+        if (const auto entry = rawlog->getAsGeneric(i)) take(*entry, offset);
       }
     } else if (const auto* observation = dynamic_cast<const CObservation*>(&object)) {
       log_.observations_only = true;

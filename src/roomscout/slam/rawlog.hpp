@@ -29,25 +29,26 @@ struct RawlogScan {
 /// The scans of one log and what the reader found in it.
 struct Rawlog {
   std::vector<RawlogScan> scans;
-  std::size_t entries = 0;            ///< top-level objects in the file
-  bool observations_only = false;     ///< true: the log's observation-only format (odometry
-                                      ///< from CObservationOdometry), false: action-observation
-  std::size_t odometry_readings = 0;  ///< odometry increments (or readings) applied
-  std::size_t invalid_beams = 0;      ///< beams flagged invalid or beyond the maximum range
-  std::size_t corrupt_beams = 0;      ///< NaN, negative or -inf ranges
-  std::size_t scans_without_returns = 0;  ///< scans whose every beam is invalid or corrupt
+  std::size_t entries = 0;                ///< top-level objects in the file
+  bool observations_only = false;         ///< true: the log's observation-only format (odometry
+                                          ///< from CObservationOdometry), false: action-observation
+  std::size_t odometry_readings = 0;      ///< odometry increments (or readings) applied
+  std::size_t invalid_beams = 0;          ///< beams flagged invalid or beyond the maximum range
+  std::size_t corrupt_beams = 0;          ///< NaN, negative or -inf ranges
+  std::size_t scans_without_returns = 0;  ///< scans without a single valid range
 };
 
 /// Reads an MRPT rawlog, gzip-compressed or not, in either of MRPT's formats: pairs of
 /// CActionCollection (odometry increments, CActionRobotMovement2D) and CSensoryFrame
 /// (observations), or a sequence of observations (CObservation2DRangeScan and
-/// CObservationOdometry, whose absolute readings are taken relative to the first). Every
+/// CObservationOdometry, whose absolute readings are taken relative to the first); either
+/// format may also come as one serialised CRawlog object. Every
 /// CObservation2DRangeScan becomes a RawlogScan, with the odometry accumulated up to it;
 /// other observations are skipped.
 /// Throws InputError(path, problem) when the file is missing or unreadable, is a truncated
 /// gzip stream, holds something other than MRPT serialised objects, ends in the middle of
 /// one, holds no 2D laser scan, or has an odometry increment or reading that is not finite,
-/// or a scan of fewer than two beams or a non-finite aperture or maximum range.
+/// or a scan of fewer than two beams or with a non-finite aperture, maximum range or sensor pose.
 Rawlog readRawlog(const std::filesystem::path& path);
 
 }  // namespace roomscout::slam
