@@ -165,6 +165,7 @@ RawlogSlamResult runRawlogSlam(const slam::Rawlog& log, const slam::SlamOptions&
   }
   result.slam_s = secondsSince(slam_start);
   result.update = sim::TimingStats::of(slam.updateTimes_ms());
+  result.stats = slam.stats();
 
   std::vector<Pose2> T_map_laser(n);
   for (std::size_t i = 0; i < n; ++i) {
@@ -190,6 +191,12 @@ RawlogSlamResult runRawlogSlam(const slam::Rawlog& log, const slam::SlamOptions&
   return result;
 }
 
+namespace {
+nlohmann::json timingJson(const sim::TimingStats& t) {
+  return {{"median", t.median_ms}, {"p95", t.p95_ms}, {"count", t.count}};
+}
+}  // namespace
+
 nlohmann::json rawlogSummaryJson(const RawlogRunInfo& info, const slam::Rawlog& log,
                                  const RawlogSlamResult& r) {
   return {
@@ -210,6 +217,14 @@ nlohmann::json rawlogSummaryJson(const RawlogRunInfo& info, const slam::Rawlog& 
       {"maps_s", r.maps_s},
       {"update_ms",
        {{"median", r.update.median_ms}, {"p95", r.update.p95_ms}, {"count", r.update.count}}},
+      {"graph",
+       {{"nodes", r.stats.nodes},
+        {"submaps", r.stats.submaps},
+        {"matches_rejected", r.stats.matches_rejected},
+        {"loop_closures", r.stats.loop_closures},
+        {"optimisations", r.stats.optimisations},
+        {"loop_search_ms", timingJson(sim::TimingStats::of(r.stats.loop_search_ms))},
+        {"optimise_ms", timingJson(sim::TimingStats::of(r.stats.optimise_ms))}}},
       {"consistency_max_range_m", kRawlogMaxRange_m},
       {"maps", {{"slam", mapJson(r.slam_map)}, {"odometry", mapJson(r.odometry_map)}}},
       {"options", info.options},

@@ -38,6 +38,7 @@ struct RawlogSlamResult {
   RawlogMap slam_map;               ///< every scan at the SLAM's final pose of its laser
   RawlogMap odometry_map;           ///< every scan at the odometry's pose of its laser
   sim::TimingStats update;          ///< Slam::update() per scan
+  slam::SlamStats stats;            ///< what the SLAM did (graph: nodes, loop closures, ...)
   double slam_s = 0.0;              ///< wall time of every update() and finish()
   double maps_s = 0.0;              ///< wall time of both maps and their consistency
 };

@@ -95,17 +95,17 @@ std::vector<ParameterRef> SlamOptions::parameters() {
        "graph: nodes per submap; a new submap starts every half of it, so each scan is matched "
        "against a submap of between half and all of this many scans"},
       {"max_range_m", &max_range_m,
-       "graph: beams are cut at this range for matching and mapping (0: the sensor's range)"},
+       "graph: beams are cut at this range for matching and mapping (0: the sensor's range); far returns are the least precise, and make large submaps"},
       {"odometry_sd_per_m", &odometry_sd_per_m,
        "graph: the odometry's along-track error after 1 m (sd) [m], for the prior on each "
        "match and the check that a match agrees with it; -1: in the simulator the simulated "
-       "robot's odometry (noise.profile), elsewhere 0.02"},
+       "robot's odometry (noise.profile), elsewhere 0.1"},
       {"odometry_rotation_sd_per_rad", &odometry_rotation_sd_per_rad,
        "graph: the odometry's heading error after turning 1 rad (sd) [rad]; -1: automatic as "
-       "above, elsewhere 0.03"},
+       "above, elsewhere 0.2"},
       {"odometry_rotation_sd_per_m", &odometry_rotation_sd_per_m,
        "graph: the odometry's heading error after driving 1 m (sd) [rad]; -1: automatic as "
-       "above, elsewhere 0.01"},
+       "above, elsewhere 0.1"},
       {"range_sd_fraction", &range_sd_fraction,
        "graph: the laser's range noise (sd) as a fraction of the range, for fitting walls to "
        "noisy returns; -1: in the simulator the simulated laser's (noise.profile), elsewhere "

@@ -42,7 +42,7 @@ struct SlamOptions {
   double diverged_ate_m = 1.0;
   // graph
   int submap_scans = 40;
-  double max_range_m = 0.0;
+  double max_range_m = 15.0;
   double odometry_sd_per_m = -1.0;  ///< < 0: automatic (see parameters())
   double odometry_rotation_sd_per_rad = -1.0;
   double odometry_rotation_sd_per_m = -1.0;

@@ -32,9 +32,9 @@ struct GraphSlamOptions {
   int submap_scans = 40;          ///< nodes per submap; a new one starts every half of it
   double max_range_m = 0.0;       ///< beams cut at this range (0: the scan's own)
   // The odometry's uncertainty (standard deviations), for the prior and the consistency check.
-  double odometry_sd_per_m = 0.02;
-  double odometry_rotation_sd_per_rad = 0.03;
-  double odometry_rotation_sd_per_m = 0.01;
+  double odometry_sd_per_m = 0.1;
+  double odometry_rotation_sd_per_rad = 0.2;
+  double odometry_rotation_sd_per_m = 0.1;
   double min_sd_m = 1e-4;  ///< floor of the prior's sd: exact odometry is trusted all but exactly
   double min_sd_rad = 1e-4;
   double max_innovation_sd = 5.0;  ///< a match further from the prediction is rejected
