@@ -24,15 +24,6 @@ namespace roomscout {
 namespace {
 
 /// graph when this build knows it, icp otherwise.
-std::string bestSlamMode() {
-  slam::SlamOptions options;
-  options.mode = "graph";
-  try {
-    options.validate();
-    return "graph";
-  } catch (const OptionError&) {
-    return "icp";
-  }
 }
 
 TEST(IntelRawlogTest, ReaderFindsEveryScanWithItsLaserAndOdometry) {
@@ -62,11 +53,11 @@ TEST(IntelRawlogTest, ReaderFindsEveryScanWithItsLaserAndOdometry) {
   EXPECT_NEAR(driven_m, 506.0, 25.0);  // "about 506 m of driving" (the data README)
 }
 
-TEST(IntelRawlogTest, SlamMapFitsTheScansBetterThanOdometry) {
+TEST(IntelRawlogTest, GraphSlamMapFitsTheScansTwiceAsWellAsOdometryWithLoopClosures) {
   ROOMSCOUT_DATASET_DIR(data);
   test::TempDir dir;
   const fs::path out = dir / "intel";
-  const std::string mode = bestSlamMode();
+  const std::string mode = "graph";
   const test::CommandResult r =
       test::runRoomscout("slam --rawlog " + (data / "slam" / "intel.rawlog").string() + " --out " +
                              out.string() + " --mode " + mode + " --seed 1",
@@ -85,7 +76,10 @@ TEST(IntelRawlogTest, SlamMapFitsTheScansBetterThanOdometry) {
   const double slam_m = summary.at("maps").at("slam").at("consistency").at("mean_distance_m");
   const double odometry_m =
       summary.at("maps").at("odometry").at("consistency").at("mean_distance_m");
-  EXPECT_LT(slam_m, odometry_m) << mode;
+  // The figure: at most half the odometry map's. (Its other target, 5 cm, is not met:
+  // the graph SLAM's map stands at about 9 cm; docs/slam.md.)
+  EXPECT_LT(slam_m, 0.5 * odometry_m) << mode;
+  EXPECT_GT(summary.at("graph").at("loop_closures").get<int>(), 100);
   std::ifstream poses(out / "poses.csv");
   std::size_t lines = 0;
   for (std::string line; std::getline(poses, line);) ++lines;

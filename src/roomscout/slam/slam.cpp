@@ -95,7 +95,8 @@ std::vector<ParameterRef> SlamOptions::parameters() {
        "graph: nodes per submap; a new submap starts every half of it, so each scan is matched "
        "against a submap of between half and all of this many scans"},
       {"max_range_m", &max_range_m,
-       "graph: beams are cut at this range for matching and mapping (0: the sensor's range); far returns are the least precise, and make large submaps"},
+       "graph: beams are cut at this range for matching and mapping (0: the sensor's range); far "
+       "returns are the least precise, and make large submaps"},
       {"odometry_sd_per_m", &odometry_sd_per_m,
        "graph: the odometry's along-track error after 1 m (sd) [m], for the prior on each "
        "match and the check that a match agrees with it; -1: in the simulator the simulated "

@@ -4,9 +4,9 @@
 #include <array>
 #include <chrono>
 #include <cmath>
-#include <limits>
 #include <cstdio>
 #include <cstdlib>
+#include <limits>
 
 #include "roomscout/slam/detail/pose_ops.hpp"
 
@@ -79,7 +79,8 @@ void GraphSlam::addSubmap(const Pose2& at) {
 }
 
 void GraphSlam::insertNode(const LaserScan& scan, const Pose2& odometry, const Pose2& estimate,
-                           std::vector<Vec2> points, CellRect& changed) {
+                           std::vector<Vec2> points, double sd_m, double sd_rad,
+                           CellRect& changed) {
   const int id = static_cast<int>(nodes_.size());
   auto node = std::make_unique<Node>();
   node->global = estimate;
@@ -103,8 +104,11 @@ void GraphSlam::insertNode(const LaserScan& scan, const Pose2& odometry, const P
       e.probability.update(e.submap.grid(), local_changed);
     }
     e.nodes.push_back(id);
-    graph_.addConstraint({e.graph_id, nodes_[id]->graph_id, local, options_.intra_sd_m,
-                          options_.intra_sd_rad, false});
+    // A node sits in its submaps as surely as the odometry placed it, at worst as the scan
+    // matcher does: with exact odometry a loop closure cannot shift a submap under its nodes.
+    graph_.addConstraint({e.graph_id, nodes_[id]->graph_id, local,
+                          std::min(options_.intra_sd_m, sd_m),
+                          std::min(options_.intra_sd_rad, sd_rad), false});
     if (s % 2 == 0 && map_) changed.unite(renderSubmapRect(s, local_changed));
   }
   // The older submap is finished once full.
@@ -125,7 +129,8 @@ CellRect GraphSlam::update(const LaserScan& input, const Pose2& odometry) {
 
   if (nodes_.empty()) {
     // The odometry frame is the map frame until the first correction.
-    insertNode(scan, odometry, odometry, std::move(points), changed);
+    insertNode(scan, odometry, odometry, std::move(points), options_.min_sd_m, options_.min_sd_rad,
+               changed);
     samples_.push_back({0, Pose2{}});
     return changed;
   }
@@ -160,9 +165,11 @@ CellRect GraphSlam::update(const LaserScan& input, const Pose2& odometry) {
     const bool consistent = shift <= options_.max_innovation_sd * sd_m &&
                             rotation <= options_.max_innovation_sd * sd_rad;
     if (std::getenv("RS_DEBUG"))
-      std::fprintf(stderr, "node %zu pred %.4f %.4f %.4f d %.4f %.4f %.4f acc %d deg %d pairs %d cons %d\n", nodes_.size(),
-                   local_prediction.x_m, local_prediction.y_m, local_prediction.yaw_rad,
-                   m.pose.x_m - local_prediction.x_m, m.pose.y_m - local_prediction.y_m, m.pose.yaw_rad - local_prediction.yaw_rad,
+      std::fprintf(stderr,
+                   "node %zu pred %.4f %.4f %.4f d %.4f %.4f %.4f acc %d deg %d pairs %d cons %d\n",
+                   nodes_.size(), local_prediction.x_m, local_prediction.y_m,
+                   local_prediction.yaw_rad, m.pose.x_m - local_prediction.x_m,
+                   m.pose.y_m - local_prediction.y_m, m.pose.yaw_rad - local_prediction.yaw_rad,
                    m.accepted, m.degenerate, m.points_on_walls, consistent);
     if (m.accepted && consistent) {
       estimate = compose(target.submap.global_pose, m.pose);
@@ -174,7 +181,7 @@ CellRect GraphSlam::update(const LaserScan& input, const Pose2& odometry) {
     ++stats_.matches_rejected;
   }
   const int previous_graph_id = last.graph_id;
-  insertNode(scan, odometry, estimate, std::move(points), changed);
+  insertNode(scan, odometry, estimate, std::move(points), sd_m, sd_rad, changed);
   const int id = static_cast<int>(nodes_.size()) - 1;
   // The odometry between consecutive nodes, as uncertain as the odometry model says: with
   // good odometry a loop closure cannot bend the chain further than the odometry allows.

@@ -48,7 +48,7 @@ struct GraphSlamOptions {
   int loop_max_candidates = 2;
   int loop_search_depth = 5;
   // Pose graph.
-  double intra_sd_m = 0.01;
+  double intra_sd_m = 0.01;  ///< a node in its submaps, at most (the odometry's if less)
   double intra_sd_rad = 0.005;
   double loop_sd_m = 0.05;
   double loop_sd_rad = 0.02;
@@ -95,7 +95,7 @@ class GraphSlam {
   std::vector<Vec2> pointsOf(const LaserScan& scan) const;
   void addSubmap(const Pose2& at);
   void insertNode(const LaserScan& scan, const Pose2& odometry, const Pose2& estimate,
-                  std::vector<Vec2> points, CellRect& changed);
+                  std::vector<Vec2> points, double sd_m, double sd_rad, CellRect& changed);
   void searchLoopClosures(int node);
   /// Solves the graph; returns the map cells that changed.
   CellRect optimise();

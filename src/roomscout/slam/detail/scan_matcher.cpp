@@ -34,8 +34,8 @@ struct WallCost {
       const Vec2& p = pair.point;
       const T x = pose[0] + c * p.x() - s * p.y();
       const T y = pose[1] + s * p.x() + c * p.y();
-      residuals[i] = scale * ((x - pair.wall.x()) * pair.normal.x() +
-                              (y - pair.wall.y()) * pair.normal.y());
+      residuals[i] =
+          scale * ((x - pair.wall.x()) * pair.normal.x() + (y - pair.wall.y()) * pair.normal.y());
     }
     return true;
   }
@@ -55,8 +55,7 @@ struct PriorCost {
 };
 
 /// A wall cell seen from the side the beam `beam` comes from.
-bool isWall(const ProbabilityGrid& grid, const WallPoints& walls, int x, int y,
-            const Vec2& beam) {
+bool isWall(const ProbabilityGrid& grid, const WallPoints& walls, int x, int y, const Vec2& beam) {
   return walls.count(x, y) > 0 && grid.at(x, y) > 0.5 && walls.beams(x, y).dot(beam) > 0.0;
 }
 
@@ -101,8 +100,8 @@ WallPair wallAt(const ProbabilityGrid& grid, const WallPoints& walls, Cell c, co
 /// Pairs each point (at `pose`) with the nearest wall point within `reach` cells; points with
 /// none are left out (ground the submap has not seen has nothing to match).
 std::vector<WallPair> pairWithWalls(const ProbabilityGrid& grid, const WallPoints& walls,
-                                    const std::vector<Vec2>& points, const Pose2& pose,
-                                    int reach, double range_sd_fraction) {
+                                    const std::vector<Vec2>& points, const Pose2& pose, int reach,
+                                    double range_sd_fraction) {
   std::vector<WallPair> pairs;
   pairs.reserve(points.size());
   const GridGeometry& g = walls.geometry();

@@ -24,12 +24,15 @@ void WallPoints::add(Cell c, const Vec2& p, const Vec2& beam) {
 WallPoints WallPoints::reframed(const GridGeometry& geometry) const {
   WallPoints out(geometry);
   const double res = geometry.resolution_m();
-  const int dx = static_cast<int>(std::lround((geometry_.origin_m().x() - geometry.origin_m().x()) / res));
-  const int dy = static_cast<int>(std::lround((geometry_.origin_m().y() - geometry.origin_m().y()) / res));
+  const int dx =
+      static_cast<int>(std::lround((geometry_.origin_m().x() - geometry.origin_m().x()) / res));
+  const int dy =
+      static_cast<int>(std::lround((geometry_.origin_m().y() - geometry.origin_m().y()) / res));
   for (int y = 0; y < geometry_.height(); ++y) {
     for (int x = 0; x < geometry_.width(); ++x) {
       const Cell to{x + dx, y + dy};
-      if (geometry.contains(to)) out.cells_[geometry.index(to)] = cells_[geometry_.index(Cell{x, y})];
+      if (geometry.contains(to))
+        out.cells_[geometry.index(to)] = cells_[geometry_.index(Cell{x, y})];
     }
   }
   return out;
@@ -78,8 +81,8 @@ CellRect Submap::insert(const LaserScan& scan, const Pose2& T_submap_sensor) {
   for (std::size_t i = 0; i < scan.ranges_m.size(); ++i) {
     const double r = scan.ranges_m[i];
     if (!(std::isfinite(r) && r >= scan.range_min_m && r <= scan.range_max_m)) continue;
-    const double a =
-        T_submap_sensor.yaw_rad + scan.angle_min_rad + static_cast<double>(i) * scan.angle_increment_rad;
+    const double a = T_submap_sensor.yaw_rad + scan.angle_min_rad +
+                     static_cast<double>(i) * scan.angle_increment_rad;
     const Vec2 dir(std::cos(a), std::sin(a));
     const Vec2 p = c + dir * r;
     walls_.add(g.cellOf(Vec2(p + dir * 1e-4)), p, dir);
