@@ -1,12 +1,13 @@
 #pragma once
-// The frontier point generation of the paper's semantic-region-aware exploration (§III-C.1):
-// one RRT rooted at the robot's start, as improved_rrt's, growing iterations_per_s iterations
-// per simulated second. Each iteration draws its sampling point P_sap: with probability
-// 1 / (1 + k t) P_rad, uniform over the bounding box of the known cells; with probability
-// k t / (1 + k t) P_sem, one of the room's frontier cells (RoomTracker::sampleCells()), t being
-// the time in the room. An extension toward P_sem takes the full step, so that the edge crosses
-// the frontier. An edge that reaches unknown space adds its first unknown point P_i (with its
-// anchor, the known cell before it) to the frontier point set F. Part of SemanticExplorer.
+// The frontier point generation of the paper's semantic-region-aware exploration (§III-C.1),
+// part of SemanticExplorer. One tree rooted at the start, as improved_rrt's (step eta_m,
+// iterations_per_s per simulated second). Each iteration draws its sampling point P_sap: with
+// probability 1 / (1 + k t) P_rad, uniform over the bounding box of the known cells; with
+// probability k t / (1 + k t) P_sem, uniform among the current room's frontier cells
+// (RoomTracker::sampleCells()), t being the time since the robot's room last changed; without
+// such cells, P_rad. An extension toward P_sem takes the full step, so that the edge crosses the
+// frontier. An edge that reaches unknown space adds its first unknown point P_i (with its
+// anchor, the known cell before it) to the frontier point set F.
 
 #include <cstdint>
 #include <functional>

@@ -9,19 +9,8 @@
 // slivers.hpp), and the end test and end phase (SemanticEndPhase). This class keeps the goal
 // (its persistence and the blacklist) and runs the parts in order.
 //
-// The paper's method
-// - Frontier point generation (§III-C.1). One tree rooted at the start, as improved_rrt's (step
-//   eta_m, iterations_per_s per simulated second). Each iteration draws its sampling point
-//   P_sap: with probability 1 / (1 + k t) P_rad, uniform over the bounding box of the known
-//   cells; with probability k t / (1 + k t) P_sem, uniform among the current room's frontier
-//   cells (known-free, non-lethal, an unknown 4-neighbour), t being the time since the robot's
-//   room last changed; without such cells, P_rad. An extension toward P_sem takes the full step,
-//   so that the edge crosses the frontier. An edge that reaches unknown space adds its first
-//   unknown point P_i (with its anchor, the known cell before it) to the frontier point set F.
-// - Evaluation (§III-C.2). For each P_i in F: G = (unknown - occupied) area in the square of
-//   half-side gain_half_side_m around P_i, C = the distance from the robot to P_i, and
-//   S = w_g G - w_c C + A when P_i's anchor lies in the robot's room, - A otherwise (a point in
-//   no room counts as outside). The best S becomes the goal.
+// The paper's method: the frontier point generation of §III-C.1 (RoomBiasedTree) and the
+// evaluation of §III-C.2 (SemanticScorer): the best S among the frontier points becomes the goal.
 // Without a semantic map (ExplorationInput::semantic null) no point is in a room: sampling is
 // uniform and every point scores -A, i.e. the plain RRT score.
 //

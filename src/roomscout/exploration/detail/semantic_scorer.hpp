@@ -1,13 +1,14 @@
 #pragma once
 // The evaluation of the paper's semantic-region-aware exploration (§III-C.2) and the terms
-// `semantic` adds to it: for each frontier point P_i, S = w_g G - w_c C + A when P_i's anchor
-// lies in the robot's room (or one of its leaves), - A otherwise, G being the (unknown -
-// occupied) area in the square of half-side gain_half_side_m around P_i and C the travel cost
-// to it (TravelCost); no +-A in a hub. Then, each off at 0: minus heading_weight (1 - cos d) / 2
-// for turning away from the robot's heading, plus segment_weight per metre of the frontier
-// segment beside P_i, and when choosing the next room C weighed next_room_cost_factor times
-// and plus mass_weight per metre of frontier around P_i. Slivers (slivers.hpp) are chosen
-// only when asked for and no other point is left. Part of SemanticExplorer.
+// `semantic` adds to it, part of SemanticExplorer. For each frontier point P_i: G = (unknown -
+// occupied) area in the square of half-side gain_half_side_m around P_i, C = the travel cost
+// from the robot to P_i (TravelCost), and S = w_g G - w_c C + A when P_i's anchor lies in the
+// robot's room (or one of its leaves), - A otherwise (a point in no room counts as outside); no
+// +-A in a hub. Then, each off at 0: minus heading_weight (1 - cos d) / 2 for turning away from
+// the robot's heading, plus segment_weight per metre of the frontier segment beside P_i, and
+// when choosing the next room C weighed next_room_cost_factor times and plus mass_weight per
+// metre of frontier around P_i. Slivers (slivers.hpp) are chosen only when asked for and no
+// other point is left.
 
 #include <cstddef>
 #include <cstdint>
