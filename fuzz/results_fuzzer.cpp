@@ -7,7 +7,7 @@
 
 #include "fuzz_support.hpp"
 #include "roomscout/core/errors.hpp"
-#include "roomscout/experiment/report.hpp"
+#include "roomscout/experiment/report_tables.hpp"
 #include "roomscout/experiment/results_file.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

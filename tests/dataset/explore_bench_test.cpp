@@ -63,7 +63,7 @@ INSTANTIATE_TEST_SUITE_P(
 
 // HouseExpo plans where semantic used to stop short: 1dfb7bd5 (38 m^2, seed 1) ended at 97 %
 // with a 0.7 m^2 wedge of floor seen past a door jamb taken for a pocket
-// (SemanticExplorerOptions::pocket_area_fraction); 60be0f23 (32 m^2, seed 2) at 97.8 % with
+// (SliverOptions::pocket_area_fraction); 60be0f23 (32 m^2, seed 2) at 97.8 % with
 // wedges of rooms seen from their doors that no tree point reached (the end phase); and
 // 6a8bc0f2 (seed 1) never ended with a first end phase that points found on a wall the laser
 // only grazed kept restarting.

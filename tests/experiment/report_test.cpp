@@ -17,6 +17,10 @@
 #include "../support/temp_dir.hpp"
 #include "roomscout/core/errors.hpp"
 #include "roomscout/experiment/paper_reference.hpp"
+#include "roomscout/experiment/report_csv.hpp"
+#include "roomscout/experiment/report_html.hpp"
+#include "roomscout/experiment/report_markdown.hpp"
+#include "roomscout/experiment/report_tables.hpp"
 #include "roomscout/experiment/report_writer.hpp"
 
 namespace roomscout::experiment {

@@ -1,7 +1,7 @@
 // results.jsonl: whole lines, a truncated last line ignored and cut off, other bad lines named.
 
 #include "roomscout/experiment/results_file.hpp"
-#include "roomscout/experiment/report.hpp"
+#include "roomscout/experiment/report_records.hpp"
 
 #include <gtest/gtest.h>
 

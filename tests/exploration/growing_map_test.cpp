@@ -355,7 +355,7 @@ TEST(SemanticExplorerOnGrowingMap, DropsWhatACroppedGridLosesAndExploresWhatAGro
   const Pose2 west{2.7, 6.0, 0.0};
   map.reveal(west.position(), 3.0);
   SemanticExplorerOptions options;
-  options.iterations_per_s = 1000.0;
+  options.tree.iterations_per_s = 1000.0;
   SemanticExplorer s(3, options);
   Costmap costmap;
   SemanticMap rooms;

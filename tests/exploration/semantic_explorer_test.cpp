@@ -75,8 +75,8 @@ template <class World, class Configure>
 TermGoal firstGoalWithTerm(const World& w, std::uint64_t seed, const Pose2& robot,
                            Configure configure) {
   SemanticExplorerOptions o;
-  o.heading_weight = 0.0;
-  o.iterations_per_s = 2000.0;
+  o.score.heading_weight = 0.0;
+  o.tree.iterations_per_s = 2000.0;
   configure(o);
   SemanticExplorer s(seed, o);
   const Decision d = decideAfterGrowing(s, w, robot);
@@ -94,8 +94,8 @@ TEST(SemanticExplorerTest, SamplingProbabilityFollowsKtOverOnePlusKt) {
   for (const double t : {5.0, 20.0, 60.0}) {
     TwoRoomGrid w;
     SemanticExplorerOptions o;
-    o.k = 0.1;
-    o.iterations_per_s = 20000.0;
+    o.tree.k = 0.1;
+    o.tree.iterations_per_s = 20000.0;
     SemanticExplorer s(7, o);
     const Pose2 robot{2.0, 1.0, 0.0};
     s.decide({w.grid, w.costmap, robot, 0.0, &w.semantic});
@@ -105,7 +105,7 @@ TEST(SemanticExplorerTest, SamplingProbabilityFollowsKtOverOnePlusKt) {
     const double n = static_cast<double>((s.semanticDraws() - sem0) + (s.randomDraws() - rad0));
     ASSERT_GT(n, 10000.0);
     // The probability in force during the last call is that of its t (time in the room).
-    const double p = semanticSampleProbability(o.k, t + 1.0);
+    const double p = semanticSampleProbability(o.tree.k, t + 1.0);
     const double share = static_cast<double>(s.semanticDraws() - sem0) / n;
     EXPECT_NEAR(share, p, 4.0 * std::sqrt(p * (1.0 - p) / n)) << "t = " << t;
   }
@@ -137,13 +137,13 @@ TEST(SemanticExplorerTest, SemanticPointsLieOnTheFrontierOfTheCurrentRoom) {
 
 TEST(SemanticExplorerTest, RoomRewardFlipsSignWithMembership) {
   SemanticExplorerOptions o;
-  o.gain_weight = 2.0;
-  o.cost_weight = 0.5;
-  o.room_reward = 4.0;
+  o.score.gain_weight = 2.0;
+  o.score.cost_weight = 0.5;
+  o.score.room_reward = 4.0;
   const SemanticExplorer s(1, o);
   EXPECT_DOUBLE_EQ(s.score(3.0, 2.0, true), 2.0 * 3.0 - 0.5 * 2.0 + 4.0);
   EXPECT_DOUBLE_EQ(s.score(3.0, 2.0, false), 2.0 * 3.0 - 0.5 * 2.0 - 4.0);
-  EXPECT_DOUBLE_EQ(s.score(3.0, 2.0, true) - s.score(3.0, 2.0, false), 2.0 * o.room_reward);
+  EXPECT_DOUBLE_EQ(s.score(3.0, 2.0, true) - s.score(3.0, 2.0, false), 2.0 * o.score.room_reward);
 }
 
 /// The strategy's first goal in the two-room grid, the robot standing at (2, 1) m, with no
@@ -157,7 +157,7 @@ struct FirstGoal {
   explicit FirstGoal(const SemanticExplorerOptions& options = {})
       : o(withoutPeriodicSwitch(options)), s(5, o), first(decideAfterGrowing(s, w, robot, 2.0)) {}
   static SemanticExplorerOptions withoutPeriodicSwitch(SemanticExplorerOptions options) {
-    options.replan_period_s = 100.0;
+    options.goal.replan_period_s = 100.0;
     return options;
   }
 };
@@ -190,7 +190,7 @@ TEST(SemanticExplorerTest, KeepsItsGoalUntilTheGoalsSquareIsExplored) {
   EXPECT_LT((kept.goal_m - first.goal_m).norm(), 1e-9);
 
   // The whole square is seen: the strategy moves on to another point.
-  reveal(o.gain_half_side_m + 0.05);
+  reveal(o.score.gain_half_side_m + 0.05);
   const Decision next = s.decide({w.grid, w.costmap, robot, 3.0, &w.semantic});
   ASSERT_EQ(next.status, Decision::Status::kGoal);
   EXPECT_GT((next.goal_m - first.goal_m).norm(), 0.5);
@@ -202,7 +202,7 @@ TEST(SemanticExplorerTest, DropsAGoalOnceTheWallBehindItIsSeen) {
   // a room corner. Whether the strategy keeps the goal then.
   auto keepsTheGoal = [](double min_frontier_m) {
     SemanticExplorerOptions options;
-    options.min_frontier_m = min_frontier_m;
+    options.slivers.min_frontier_m = min_frontier_m;
     FirstGoal f(options);
     auto& [w, o, s, robot, first] = f;
     EXPECT_EQ(first.status, Decision::Status::kGoal);
@@ -211,7 +211,8 @@ TEST(SemanticExplorerTest, DropsAGoalOnceTheWallBehindItIsSeen) {
     // min_unknown_m2), and no free cell of the square next to unknown space.
     const GridGeometry& g = w.grid.geometry();
     const Cell c = g.cellOf(first.goal_m);
-    const int r = static_cast<int>(std::lround((o.gain_half_side_m + 1.5) / g.resolution_m()));
+    const int r =
+        static_cast<int>(std::lround((o.score.gain_half_side_m + 1.5) / g.resolution_m()));
     for (int y = 0; y <= c.y + 6; ++y) {
       for (int x = std::max(0, c.x - r); x <= std::min(g.width() - 1, c.x + r); ++x) {
         w.grid.setState(g.index(Cell{x, y}),
@@ -223,7 +224,7 @@ TEST(SemanticExplorerTest, DropsAGoalOnceTheWallBehindItIsSeen) {
     EXPECT_EQ(next.status, Decision::Status::kGoal);
     return (next.goal_m - first.goal_m).norm() < 1e-9;
   };
-  EXPECT_FALSE(keepsTheGoal(SemanticExplorerOptions{}.min_frontier_m));
+  EXPECT_FALSE(keepsTheGoal(SemanticExplorerOptions{}.slivers.min_frontier_m));
   // Counting unknown area only, the square is not explored yet.
   EXPECT_TRUE(keepsTheGoal(0.0));
 }
@@ -245,7 +246,7 @@ TEST(SemanticExplorerTest, DoesNotReturnToAGoalWhoseCellTurnedLethal) {
   ASSERT_TRUE(w.costmap.isLethal(g.index(c)));
   const Decision dropped = s.decide({w.grid, w.costmap, robot, 2.5, &w.semantic});
   ASSERT_EQ(dropped.status, Decision::Status::kGoal);
-  EXPECT_GT((dropped.goal_m - first.goal_m).norm(), o.blacklist_radius_m);
+  EXPECT_GT((dropped.goal_m - first.goal_m).norm(), o.goal.blacklist_radius_m);
 
   // The wall fades; however long the tree grows, that cell is no goal again.
   w.grid.setState(g.index(wall), CellState::kUnknown);
@@ -253,7 +254,7 @@ TEST(SemanticExplorerTest, DoesNotReturnToAGoalWhoseCellTurnedLethal) {
   for (double t = 3.0; t <= 60.0; t += 1.0) {
     s.decide({w.grid, w.costmap, robot, t, &w.semantic});
     for (const SemanticExplorer::FrontierPoint& point : s.frontierPoints()) {
-      EXPECT_GT((point.p - first.goal_m).norm(), o.blacklist_radius_m - 1e-9) << "t = " << t;
+      EXPECT_GT((point.p - first.goal_m).norm(), o.goal.blacklist_radius_m - 1e-9) << "t = " << t;
     }
   }
 }
@@ -280,8 +281,8 @@ TEST(SemanticExplorerTest, InAHallwayTakesTheRoomBesideItInsteadOfTheHallwaysFar
     HallwayGrid w;
     ASSERT_EQ(w.semantic.region(1)->neighbours.size(), 4u);
     SemanticExplorerOptions o;
-    o.hub_min_neighbours = hub_min_neighbours;
-    o.iterations_per_s = 2000.0;
+    o.rooms.hub_min_neighbours = hub_min_neighbours;
+    o.tree.iterations_per_s = 2000.0;
     SemanticExplorer s(11, o);
     const Decision d = decideAfterGrowing(s, w, Pose2{2.0, 0.75, 0.0});
     EXPECT_EQ(s.currentRoom(), 1);
@@ -299,11 +300,11 @@ TEST(SemanticExplorerTest, InAHallwayTakesTheRoomBesideItInsteadOfTheHallwaysFar
   };
   bool in_hub = false;
   std::vector<Vec2> candidates;
-  firstGoal(SemanticExplorerOptions{}.hub_min_neighbours, in_hub, candidates);
+  firstGoal(SemanticExplorerOptions{}.rooms.hub_min_neighbours, in_hub, candidates);
   EXPECT_TRUE(in_hub);
   ASSERT_FALSE(candidates.empty());
   const SemanticExplorerOptions defaults;
-  const double reach_m = defaults.hub_sample_radius_m + 0.1;
+  const double reach_m = defaults.rooms.hub_sample_radius_m + 0.1;
   for (const Vec2& c : candidates) {
     EXPECT_LE((c - Vec2(2.0, 0.75)).lpNorm<Eigen::Infinity>(), reach_m) << c.transpose();
     EXPECT_GT(c.y(), 3.8) << c.transpose();  // the rooms' frontier, not the hallway's end
@@ -346,13 +347,13 @@ TEST(SemanticExplorerTest, ChoosingTheNextRoomTheNearestComesFirst) {
   // segment term, which favours the east end's 2 m of frontier over the alcove's 1.2 m: this is
   // about the factor alone.
   for (const std::uint64_t seed : {1u, 2u, 3u}) {
-    for (const double factor : {1.0, SemanticExplorerOptions{}.next_room_cost_factor}) {
+    for (const double factor : {1.0, SemanticExplorerOptions{}.score.next_room_cost_factor}) {
       NextRoomGrid w;
       SemanticExplorerOptions o;
-      o.next_room_cost_factor = factor;
-      o.segment_weight = 0.0;
-      o.leaf_rooms = false;  // room 2 is a dead end off room 1
-      o.iterations_per_s = 2000.0;
+      o.score.next_room_cost_factor = factor;
+      o.score.segment_weight = 0.0;
+      o.rooms.leaf_rooms = false;  // room 2 is a dead end off room 1
+      o.tree.iterations_per_s = 2000.0;
       SemanticExplorer s(seed, o);
       const Decision d = decideAfterGrowing(s, w, Pose2{1.0, 2.0, 0.0});
       EXPECT_EQ(s.currentRoom(), 1);
@@ -405,12 +406,12 @@ TEST(SemanticExplorerTest, ChoosingTheNextRoomTheSideWithMoreFrontierAroundItCom
   // 3 in S with C weighed next_room_cost_factor times. The frontier mass term adds 6.6 m of
   // the patches' frontier (x 1 per metre) to the north end and takes it.
   for (const std::uint64_t seed : {1u, 2u, 3u}) {
-    for (const double weight : {0.0, SemanticExplorerOptions{}.mass_weight}) {
+    for (const double weight : {0.0, SemanticExplorerOptions{}.score.mass_weight}) {
       FrontierMassGrid w;
       const TermGoal g =
           firstGoalWithTerm(w, seed, Pose2{5.0, 6.0, 0.0}, [&](SemanticExplorerOptions& o) {
-            o.mass_weight = weight;
-            o.leaf_rooms = false;  // both corridors are dead ends off room 1
+            o.score.mass_weight = weight;
+            o.rooms.leaf_rooms = false;  // both corridors are dead ends off room 1
           });
       EXPECT_NE(g.room, 0);
       EXPECT_FALSE(g.hub);
@@ -460,8 +461,9 @@ TEST(SemanticExplorerTest, ALeafRoomOffTheCurrentRoomIsFinishedWithIt) {
       LeafRoomGrid w;
       ASSERT_EQ(w.semantic.region(2)->neighbours, std::vector<int>{1});
       ASSERT_EQ(w.semantic.region(3)->neighbours.size(), 2u);
-      const TermGoal g = firstGoalWithTerm(
-          w, seed, Pose2{2.0, 3.3, 0.0}, [&](SemanticExplorerOptions& o) { o.leaf_rooms = leaf; });
+      const TermGoal g =
+          firstGoalWithTerm(w, seed, Pose2{2.0, 3.3, 0.0},
+                            [&](SemanticExplorerOptions& o) { o.rooms.leaf_rooms = leaf; });
       EXPECT_EQ(g.room, 1);
       EXPECT_FALSE(g.hub);
       EXPECT_EQ(g.semantic_candidates.empty(), !leaf);
@@ -499,11 +501,11 @@ TEST(SemanticExplorerTest, TheLongerFrontierSegmentWinsByTheSegmentTerm) {
   // Without the segment term the nearer gap wins (C); with it (4 per metre up to 2 m: 8 against
   // 4.8) the gap onto more unseen space does.
   for (const std::uint64_t seed : {1u, 2u, 3u}) {
-    for (const double weight : {0.0, SemanticExplorerOptions{}.segment_weight}) {
+    for (const double weight : {0.0, SemanticExplorerOptions{}.score.segment_weight}) {
       TwoGapGrid w;
       const Decision d =
           firstGoalWithTerm(w, seed, Pose2{3.0, 3.0, 0.0}, [&](SemanticExplorerOptions& o) {
-            o.segment_weight = weight;
+            o.score.segment_weight = weight;
           }).decision;
       ASSERT_EQ(d.status, Decision::Status::kGoal);
       EXPECT_GT(d.goal_m.y(), 5.9) << "seed " << seed;
@@ -546,7 +548,7 @@ TEST(SemanticExplorerTest, DoesNotDriveToAPocketOfUnknownSpaceInAnotherRoom) {
   auto goesToTheBlock = [](double pocket_area_m2) {
     PocketGrid w;
     SemanticExplorerOptions o;
-    o.pocket_area_m2 = pocket_area_m2;
+    o.slivers.pocket_area_m2 = pocket_area_m2;
     SemanticExplorer s(11, o);
     bool at_block = false;
     for (double t = 0.0; t <= 20.0; t += 1.0) {
@@ -559,7 +561,7 @@ TEST(SemanticExplorerTest, DoesNotDriveToAPocketOfUnknownSpaceInAnotherRoom) {
     return at_block;
   };
   // About 1.1 m^2 of the block's inside is unknown and clear of the inflation: a pocket.
-  EXPECT_FALSE(goesToTheBlock(SemanticExplorerOptions{}.pocket_area_m2));
+  EXPECT_FALSE(goesToTheBlock(SemanticExplorerOptions{}.slivers.pocket_area_m2));
   // Without the test, its open face is the best (the only) frontier point.
   EXPECT_TRUE(goesToTheBlock(0.0));
 }
@@ -576,7 +578,7 @@ TEST(SemanticExplorerTest, OnceIdleLooksIntoAPocketThatIsLargeForTheMap) {
   auto run = [](double fraction) {
     PocketGrid w;
     SemanticExplorerOptions o;
-    o.pocket_area_fraction = fraction;
+    o.slivers.pocket_area_fraction = fraction;
     SemanticExplorer s(11, o);
     Outcome out;
     for (double t = 0.0; t <= 100.0 && out.done_s < 0.0; t += 1.0) {
@@ -590,13 +592,13 @@ TEST(SemanticExplorerTest, OnceIdleLooksIntoAPocketThatIsLargeForTheMap) {
     return out;
   };
   const SemanticExplorerOptions defaults;
-  const Outcome with = run(defaults.pocket_area_fraction);
-  EXPECT_GE(with.first_block_goal_s, defaults.idle_end_s) << "not before idling";
+  const Outcome with = run(defaults.slivers.pocket_area_fraction);
+  EXPECT_GE(with.first_block_goal_s, defaults.end.idle_end_s) << "not before idling";
   EXPECT_LT(with.done_s, 0.0) << "ended at " << with.done_s << " s";
   const Outcome without = run(0.0);
   EXPECT_LT(without.first_block_goal_s, 0.0);
   // Idle with nothing left but a pocket: the end phase has no cell to visit, so it ends.
-  EXPECT_GE(without.done_s, defaults.idle_end_s) << "not before idling";
+  EXPECT_GE(without.done_s, defaults.end.idle_end_s) << "not before idling";
 }
 
 /// A known 12 x 6 m floor split by a wall at x = 4 m that leaves a 1 m gap at the north end,
@@ -628,7 +630,7 @@ TEST(SemanticExplorerTest, CostsAPointByThePathToItNotTheStraightLine) {
   auto goal = [](bool geodesic) {
     WallGrid w;
     SemanticExplorerOptions o;
-    o.geodesic_cost = geodesic;
+    o.score.geodesic_cost = geodesic;
     SemanticExplorer s(5, o);
     const Pose2 robot{3.0, 1.0, 0.0};
     s.decide({w.grid, w.costmap, robot, 0.0, nullptr});
@@ -656,14 +658,14 @@ TEST(SemanticExplorerTest, EndPhaseTakesTheCellNearestByPath) {
   auto first_end_goal = [](bool geodesic) {
     WallGrid w;
     SemanticExplorerOptions o;
-    o.min_unknown_m2 = 100.0;
-    o.geodesic_cost = geodesic;
+    o.slivers.min_unknown_m2 = 100.0;
+    o.score.geodesic_cost = geodesic;
     SemanticExplorer s(5, o);
     const Pose2 robot{3.0, 1.0, 0.0};
-    for (double t = 0.0; t <= 2.0 * o.idle_end_s; t += 1.0) {
+    for (double t = 0.0; t <= 2.0 * o.end.idle_end_s; t += 1.0) {
       const Decision d = s.decide({w.grid, w.costmap, robot, t, nullptr});
       if (d.status == Decision::Status::kGoal && (d.goal_m - robot.position()).norm() > 0.5) {
-        EXPECT_GE(t, o.idle_end_s) << "not before idling";
+        EXPECT_GE(t, o.end.idle_end_s) << "not before idling";
         return d.goal_m;
       }
     }
@@ -693,7 +695,7 @@ TEST(SemanticExplorerTest, OfTwoEqualEndsTakesTheOneAhead) {
     for (const double yaw : {0.0, M_PI}) {
       CorridorGrid w;
       SemanticExplorerOptions o;
-      o.iterations_per_s = 2000.0;
+      o.tree.iterations_per_s = 2000.0;
       SemanticExplorer s(seed, o);
       const Decision d = decideAfterGrowing(s, w, Pose2{5.0, 3.0, yaw});
       ASSERT_EQ(d.status, Decision::Status::kGoal);
@@ -720,7 +722,7 @@ TEST(SemanticExplorerTest, KeepsItsGoalWhenTheRobotTurnsAwayFromIt) {
   for (const std::uint64_t seed : {1u, 2u, 3u}) {
     CorridorGrid w;
     SemanticExplorerOptions o;
-    o.iterations_per_s = 2000.0;
+    o.tree.iterations_per_s = 2000.0;
     SemanticExplorer s(seed, o);
     s.decide({w.grid, w.costmap, Pose2{5.0, 3.0, 0.0}, 0.0, &w.semantic});
     const Decision first = s.decide({w.grid, w.costmap, Pose2{5.0, 3.0, 0.0}, 20.0, &w.semantic});
@@ -753,8 +755,8 @@ TEST(SemanticExplorerTest, TakesTheCorridorSeenSinceTheLastSegmentationAsItsRoom
   auto run = [](double label_search_m, std::vector<Vec2>& candidates) {
     FreshCorridorGrid w;
     SemanticExplorerOptions o;
-    o.label_search_m = label_search_m;
-    o.iterations_per_s = 2000.0;
+    o.rooms.label_search_m = label_search_m;
+    o.tree.iterations_per_s = 2000.0;
     SemanticExplorer s(4, o);
     const Decision d = decideAfterGrowing(s, w, Pose2{1.0, 3.0, 0.0});
     EXPECT_EQ(s.currentRoom(), 1);
@@ -762,7 +764,7 @@ TEST(SemanticExplorerTest, TakesTheCorridorSeenSinceTheLastSegmentationAsItsRoom
     return d;
   };
   std::vector<Vec2> candidates;
-  const Decision d = run(SemanticExplorerOptions{}.label_search_m, candidates);
+  const Decision d = run(SemanticExplorerOptions{}.rooms.label_search_m, candidates);
   ASSERT_FALSE(candidates.empty());
   for (const Vec2& c : candidates) {
     EXPECT_GT(c.x(), 6.8) << c.transpose();  // the corridor's end ...
@@ -799,48 +801,48 @@ TEST(SemanticExplorerTest, ThePapersPresetHasEveryAdditionOff) {
   const SemanticExplorerOptions p = SemanticExplorerOptions::paper();
   EXPECT_NO_THROW(p.validate());
   // improved_rrt's tree, Euclidean C.
-  EXPECT_EQ(p.eta_m, 1.0);
-  EXPECT_EQ(p.iterations_per_s, 100.0);
-  EXPECT_FALSE(p.geodesic_cost);
+  EXPECT_EQ(p.tree.eta_m, 1.0);
+  EXPECT_EQ(p.tree.iterations_per_s, 100.0);
+  EXPECT_FALSE(p.score.geodesic_cost);
   // Slivers, label search, hubs, next room, heading, segment, leaf rooms, idle and end phase.
-  EXPECT_EQ(p.min_unknown_m2, 0.0);
-  EXPECT_EQ(p.min_frontier_m, 0.0);
-  EXPECT_EQ(p.pocket_area_m2, 0.0);
-  EXPECT_EQ(p.pocket_area_fraction, 0.0);
-  EXPECT_EQ(p.label_search_m, 0.0);
-  EXPECT_EQ(p.hub_min_neighbours, 0);
-  EXPECT_EQ(p.next_room_cost_factor, 1.0);
-  EXPECT_EQ(p.mass_weight, 0.0);
-  EXPECT_EQ(p.heading_weight, 0.0);
-  EXPECT_EQ(p.segment_weight, 0.0);
-  EXPECT_FALSE(p.leaf_rooms);
-  EXPECT_EQ(p.idle_end_s, 0.0);
+  EXPECT_EQ(p.slivers.min_unknown_m2, 0.0);
+  EXPECT_EQ(p.slivers.min_frontier_m, 0.0);
+  EXPECT_EQ(p.slivers.pocket_area_m2, 0.0);
+  EXPECT_EQ(p.slivers.pocket_area_fraction, 0.0);
+  EXPECT_EQ(p.rooms.label_search_m, 0.0);
+  EXPECT_EQ(p.rooms.hub_min_neighbours, 0);
+  EXPECT_EQ(p.score.next_room_cost_factor, 1.0);
+  EXPECT_EQ(p.score.mass_weight, 0.0);
+  EXPECT_EQ(p.score.heading_weight, 0.0);
+  EXPECT_EQ(p.score.segment_weight, 0.0);
+  EXPECT_FALSE(p.rooms.leaf_rooms);
+  EXPECT_EQ(p.end.idle_end_s, 0.0);
   // The paper's terms at semantic's values.
   const SemanticExplorerOptions d;
-  EXPECT_EQ(p.k, d.k);
-  EXPECT_EQ(p.gain_weight, d.gain_weight);
-  EXPECT_EQ(p.cost_weight, d.cost_weight);
-  EXPECT_EQ(p.room_reward, d.room_reward);
-  EXPECT_EQ(p.gain_half_side_m, d.gain_half_side_m);
+  EXPECT_EQ(p.tree.k, d.tree.k);
+  EXPECT_EQ(p.score.gain_weight, d.score.gain_weight);
+  EXPECT_EQ(p.score.cost_weight, d.score.cost_weight);
+  EXPECT_EQ(p.score.room_reward, d.score.room_reward);
+  EXPECT_EQ(p.score.gain_half_side_m, d.score.gain_half_side_m);
   // What it keeps to run and end: goal persistence, blacklist, improved_rrt's end test.
-  EXPECT_EQ(p.goal_min_unknown_m2, d.goal_min_unknown_m2);
-  EXPECT_EQ(p.replan_period_s, d.replan_period_s);
-  EXPECT_EQ(p.switch_margin, d.switch_margin);
-  EXPECT_EQ(p.blacklist_radius_m, d.blacklist_radius_m);
-  EXPECT_EQ(p.end_checks, d.end_checks);
-  EXPECT_EQ(p.end_min_frontier_cells, d.end_min_frontier_cells);
-  EXPECT_EQ(p.end_pocket_area_m2, 4.0);
-  EXPECT_EQ(d.end_pocket_area_m2, 0.0);
+  EXPECT_EQ(p.goal.goal_min_unknown_m2, d.goal.goal_min_unknown_m2);
+  EXPECT_EQ(p.goal.replan_period_s, d.goal.replan_period_s);
+  EXPECT_EQ(p.goal.switch_margin, d.goal.switch_margin);
+  EXPECT_EQ(p.goal.blacklist_radius_m, d.goal.blacklist_radius_m);
+  EXPECT_EQ(p.end.end_checks, d.end.end_checks);
+  EXPECT_EQ(p.end.end_min_frontier_cells, d.end.end_min_frontier_cells);
+  EXPECT_EQ(p.end.end_pocket_area_m2, 4.0);
+  EXPECT_EQ(d.end.end_pocket_area_m2, 0.0);
 }
 
 TEST(SemanticExplorerTest, TheRegisteredPresetsAreThePapersAndItsAblations) {
   expectOptions("semantic", SemanticExplorerOptions{});
   expectOptions("semantic_paper", SemanticExplorerOptions::paper());
   SemanticExplorerOptions sampling = SemanticExplorerOptions::paper();
-  sampling.room_reward = 0.0;
+  sampling.score.room_reward = 0.0;
   expectOptions("semantic_sampling_only", sampling);
   SemanticExplorerOptions scoring = SemanticExplorerOptions::paper();
-  scoring.k = 0.0;
+  scoring.tree.k = 0.0;
   expectOptions("semantic_score_only", scoring);
 }
 

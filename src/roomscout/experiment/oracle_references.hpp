@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "roomscout/experiment/report.hpp"
+#include "roomscout/experiment/report_records.hpp"
 
 namespace roomscout::experiment {
 

@@ -1,10 +1,9 @@
 #pragma once
-// `roomscout report`: tables in the layout of the paper's Tables I-III from one or more
-// results.jsonl files, and Table IV, which sets each method under sensor noise and SLAM beside
-// itself without. loadResults() gives every episode's key, setting, numbers, curve and (for
-// runs that kept their outputs) trajectory; attachOracleTours() (oracle_references.hpp) adds
-// the length of a full-knowledge tour of each world; buildReport() the per world x method
-// statistics. report_figures.hpp draws the figures, report_writer.hpp writes everything.
+// The statistics of `roomscout report`: per row (a world, or a group of worlds) and method,
+// Table I's times and lengths over the episodes every method finished, the revisits, the
+// oracle tours, Table II's map types, Table III's map costs and Table IV's comparison of
+// settings, built from the records of report_records.hpp. report_tables.hpp lays them out as
+// tables; report_markdown.hpp, report_csv.hpp and report_html.hpp render them.
 
 #include <array>
 #include <cstddef>
@@ -15,99 +14,9 @@
 #include <utility>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
-#include "roomscout/core/geometry.hpp"
-#include "roomscout/experiment/episode_key.hpp"
-#include "roomscout/plots/html_report.hpp"
+#include "roomscout/experiment/report_records.hpp"
 
 namespace roomscout::experiment {
-
-/// One map's numbers in one episode.
-struct MapSample {
-  double storage_bytes = 0.0;
-  std::size_t updates = 0;
-  std::optional<double> update_median_ms;
-  std::optional<double> update_p95_ms;
-};
-
-/// One row of an episode's exploration curve.
-struct CurvePoint {
-  double length_m = 0.0;  ///< trajectory length driven so far [m]
-  double rate = 0.0;      ///< exploration rate, in [0, 1]
-};
-
-/// The full-knowledge reference tour of an episode's world (sim/oracle_tour.hpp), planned with
-/// the episode's options.
-struct OracleReference {
-  double length_m = 0.0;       ///< tour length [m]
-  double coverage = 0.0;       ///< fraction of the reachable free space it sees, [0, 1]
-  std::size_t viewpoints = 0;  ///< viewpoints visited
-};
-
-/// The numbers of one recorded episode that the tables and figures use.
-struct EpisodeSummary {
-  EpisodeKey key;
-  std::string world_group;  ///< "builtin" or the folder of the world file
-  double exploration_rate = 0.0;
-  std::optional<double> t98_s;
-  std::optional<double> l98_m;
-  std::optional<double> revisits;
-  std::optional<double> revisits_98;      ///< revisits up to T98 (none in older records)
-  std::map<std::string, MapSample> maps;  ///< by map type (record's map_stats)
-  std::string where;                      ///< "file:line" of the record
-  /// What sim::loadWorld takes to load the world again: a built-in name, or the world file as
-  /// the bench was given it (a relative path is relative to where the bench ran). From the
-  /// record's world_source ("builtin:NAME" or a path); for records without one, the world's
-  /// name when it is a built-in world; else empty.
-  std::string world_spec;
-  /// The record's option groups that shape the world model and the oracle tour (robot,
-  /// world, laser, mapping, costmap) and, for a random start (start_mode "random"), "start":
-  /// [x, y, yaw], as compact JSON; empty when the record has neither.
-  std::string world_setup;
-  bool random_start = false;  ///< the record's start_mode is "random" (bench --random-starts)
-  /// The folder with the full outputs of `explore` (seed 1 of a bench): the record's
-  /// `outputs` against its results file's folder; empty when the record has none.
-  std::filesystem::path outputs_dir;
-  std::vector<CurvePoint> curve;   ///< rate against length (record's curve), in order
-  std::vector<Vec2> trajectory_m;  ///< positions (map frame), kept only for records with outputs
-  std::optional<OracleReference> oracle;  ///< set by attachOracleTours()
-  /// The sensor noise and SLAM the episode ran with, e.g. "noise tb3, slam icp", "noise tb3"
-  /// or "slam icp": the record's options noise.profile and slam.mode (else the mode of its
-  /// `slam` block), each left out when "none" or absent. Empty for noise-free sensors and the
-  /// true pose (and for records older than these options).
-  std::string setting;
-  /// RMSE of the SLAM pose estimate's positions against the true ones over the run [m]
-  /// (record's slam.ate_rmse_m); none without SLAM.
-  std::optional<double> ate_rmse_m;
-  /// SLAM's error exceeded the configured bound (record's slam.diverged): not a success.
-  bool slam_diverged = false;
-
-  /// Final exploration rate >= kSuccessRate and SLAM (if any) did not diverge.
-  bool succeeded() const;
-};
-
-/// The episode's numbers from a results record. Throws InputError(where, ...) when the key or
-/// exploration_rate is missing or a field (also of the `slam` block and the options
-/// noise.profile and slam.mode) has the wrong type. `results_dir` is the folder of the results
-/// file, against which the record's `outputs` is resolved.
-EpisodeSummary summarizeRecord(const nlohmann::json& record, const std::string& where,
-                               const std::filesystem::path& results_dir = {});
-
-/// Episodes merged from several results files, one per key and setting.
-struct ResultSet {
-  std::vector<EpisodeSummary> episodes;      ///< in input order
-  std::vector<std::filesystem::path> files;  ///< the results files read
-  /// Records dropped because their key and setting came earlier.
-  std::size_t duplicates = 0;
-  std::size_t truncated = 0;  ///< files that ended in a truncated line (ignored)
-};
-
-/// Reads each input (a bench directory, meaning its results.jsonl, or a .jsonl file) and
-/// merges the records; of records with the same key and setting the first one read is kept
-/// (the same world, method and seed under another setting is another episode). Throws
-/// InputError naming the file (and line) that is missing or malformed.
-ResultSet loadResults(const std::vector<std::filesystem::path>& inputs);
 
 /// Mean and sample standard deviation (n - 1) of some values.
 struct Stat {
@@ -239,68 +148,12 @@ struct Report {
   std::vector<std::string> methodsSameEverySeed() const;
 };
 
-/// Success threshold of Table I's success rate (final exploration rate).
-inline constexpr double kSuccessRate = 0.98;
-
-/// The main setting of these episodes (see Report).
-std::string mainSetting(const std::vector<EpisodeSummary>& episodes);
-
-/// The episodes of one setting, in order, with the files and counts of `results`.
-ResultSet episodesOfSetting(const ResultSet& results, const std::string& setting);
-
 Report buildReport(const ResultSet& results);
-
-/// The report's tables as cells, shared by the markdown files and the HTML page: Table I
-/// (method rows, per world T98, paper T, L98, paper L (T98 and L98 over the row's paired
-/// episodes, "no shared pair" when there are none), L98 and T98 over the reference's, L98 /
-/// oracle when known, the share of pairs that beat semantic when semantic is there, success),
-/// the revisits, the oracle reference (rows with an oracle; none when there is none),
-/// Table II and Table III, and Table IV (none when every episode is of the main setting).
-plots::HtmlTable table1Cells(const Report& report);
-plots::HtmlTable revisitsCells(const Report& report);
-std::optional<plots::HtmlTable> oracleCells(const Report& report);
-plots::HtmlTable table2Cells(const Report& report);
-plots::HtmlTable table3Cells(const Report& report);
-/// Table IV: a line per row x method with episodes in another setting; World, Method, then the
-/// main setting's T98, L98 and success, then per other setting (in order of first appearance)
-/// its T98, L98, success (with the diverged runs counted when there are any), ATE and L98
-/// ratio (its mean L98 over the main setting's).
-std::optional<plots::HtmlTable> slamCells(const Report& report);
-
-/// The text that explains each table (also on the HTML page).
-std::string table1Description();
-/// Which episodes Table I's means are over in this report: per row the paired (world, seed)
-/// pairs out of all, the reference method of the ratios, what "beats semantic" counts.
-std::string pairingLine(const Report& report);
-std::string revisitsDescription();
-std::string oracleDescription();
-std::string table2Description();
-std::string table3Description();
-std::string slamDescription();
-/// "N episodes from `file`, ...", and how many episodes of other settings Table IV holds.
-std::string sourcesLine(const Report& report);
-/// Names the methods of methodsSameEverySeed() and why their sd is 0; empty when none.
-std::string sameEverySeedLine(const Report& report);
-/// The sentence saying that (some) episodes started at poses drawn from their seed, or empty.
-std::string startPosesLine(const Report& report);
 
 /// The row an episode belongs to: its world when built in, else its world's group.
 std::string rowNameOf(const EpisodeSummary& episode);
 
 /// A row's title in tables and figures: the world, or "group (N worlds)".
 std::string rowTitle(const ReportRow& row);
-
-std::string table1Markdown(const Report& report);
-std::string table1Csv(const Report& report);
-std::string table2Markdown(const Report& report);
-std::string table3Markdown(const Report& report);
-/// Table IV's heading, description, sources and table; empty when there is no Table IV.
-std::string slamMarkdown(const Report& report);
-
-/// Writes table1.md, table1.csv, table2.md, table3.md and, when the report has other settings,
-/// table4_slam.md into `directory` (created if needed), each atomically; returns their paths.
-/// Throws InputError when it cannot write.
-std::vector<std::filesystem::path> writeReport(const Report& report,
-                                               const std::filesystem::path& directory);
 
 }  // namespace roomscout::experiment

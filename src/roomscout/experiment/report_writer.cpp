@@ -1,89 +1,33 @@
 #include "roomscout/experiment/report_writer.hpp"
 
+#include <utility>
+
 #include "roomscout/experiment/oracle_references.hpp"
+#include "roomscout/experiment/report_csv.hpp"
+#include "roomscout/experiment/report_figures.hpp"
+#include "roomscout/experiment/report_html.hpp"
+#include "roomscout/experiment/report_markdown.hpp"
 #include "roomscout/io/atomic_file.hpp"
+#include "roomscout/plots/html_report.hpp"
 
 namespace roomscout::experiment {
 namespace fs = std::filesystem;
-namespace {
 
-/// Markdown emphasis and code marks taken out, for the HTML page.
-std::string plain(std::string text) {
-  std::string out;
-  for (std::size_t i = 0; i < text.size(); ++i) {
-    if (text[i] == '`' || text[i] == '*') continue;
-    out += text[i];
-  }
-  return out;
-}
-
-plots::HtmlTable plainTable(plots::HtmlTable table) {
-  for (std::string& h : table.header) h = plain(h);
-  for (auto& row : table.rows) {
-    for (std::string& cell : row) cell = plain(cell);
-  }
-  return table;
-}
-
-}  // namespace
-
-plots::HtmlPage reportPage(const Report& report, const std::vector<ReportFigure>& figures,
-                           const std::vector<std::string>& notes) {
-  plots::HtmlPage page;
-  page.title = "roomscout report";
-  page.intro.push_back({plain(sourcesLine(report)) + "."});
-  for (const std::string& n : notes) page.intro.push_back({"Note: " + n});
-
-  plots::HtmlSection t1{"Table I: exploration time and trajectory length", {}};
-  t1.blocks.push_back(plots::HtmlParagraph{plain(table1Description())});
-  if (const std::string pairing = pairingLine(report); !pairing.empty()) {
-    t1.blocks.push_back(plots::HtmlParagraph{plain(pairing)});
-  }
-  if (const std::string same = sameEverySeedLine(report); !same.empty()) {
-    t1.blocks.push_back(plots::HtmlParagraph{plain(same)});
-  }
-  if (const std::string starts = startPosesLine(report); !starts.empty()) {
-    t1.blocks.push_back(plots::HtmlParagraph{plain(starts)});
-  }
-  t1.blocks.push_back(plainTable(table1Cells(report)));
-  t1.blocks.push_back(plots::HtmlParagraph{plain(revisitsDescription())});
-  t1.blocks.push_back(plainTable(revisitsCells(report)));
-  if (std::optional<plots::HtmlTable> oracle = oracleCells(report)) {
-    t1.blocks.push_back(plots::HtmlParagraph{plain(oracleDescription())});
-    t1.blocks.push_back(plainTable(*oracle));
-  }
-  plots::HtmlSection t2{"Table II: map types built", {}};
-  t2.blocks.push_back(plots::HtmlParagraph{plain(table2Description())});
-  t2.blocks.push_back(plainTable(table2Cells(report)));
-  plots::HtmlSection t3{"Table III: storage and update time of each map", {}};
-  t3.blocks.push_back(plots::HtmlParagraph{plain(table3Description())});
-  t3.blocks.push_back(plainTable(table3Cells(report)));
-  page.sections = {t1, t2, t3};
-  if (std::optional<plots::HtmlTable> slam = slamCells(report)) {
-    plots::HtmlSection t4{"Table IV: exploration under noise and SLAM", {}};
-    t4.blocks.push_back(plots::HtmlParagraph{plain(slamDescription())});
-    t4.blocks.push_back(plainTable(*slam));
-    page.sections.push_back(std::move(t4));
-  }
-
-  struct Kind {
-    const char* kind;
-    const char* title;
+std::vector<fs::path> writeReport(const Report& report, const fs::path& directory) {
+  io::ensureWritableDirectory(directory);
+  std::vector<std::pair<std::string, std::string>> files = {
+      {"table1.md", table1Markdown(report)},
+      {"table1.csv", table1Csv(report)},
+      {"table2.md", table2Markdown(report)},
+      {"table3.md", table3Markdown(report)},
   };
-  static constexpr Kind kKinds[] = {
-      {"rate", "Fig. 5: exploration rate against trajectory length"},
-      {"trajectories", "Fig. 6: trajectories of the methods"},
-      {"maps", "Fig. 7: the four maps of one run"},
-      {"revisits", "Room revisits"},
-  };
-  for (const Kind& k : kKinds) {
-    plots::HtmlSection section{k.title, {}};
-    for (const ReportFigure& f : figures) {
-      if (f.kind == k.kind) section.blocks.push_back(plots::htmlFigure(f.figure, f.caption));
-    }
-    if (!section.blocks.empty()) page.sections.push_back(std::move(section));
+  if (report.hasTable4()) files.emplace_back("table4_slam.md", slamMarkdown(report));
+  std::vector<fs::path> written;
+  for (const auto& [name, text] : files) {
+    io::writeFileAtomic(directory / name, text);
+    written.push_back(directory / name);
   }
-  return page;
+  return written;
 }
 
 ReportOutput runReport(const std::vector<fs::path>& inputs, const fs::path& out,

@@ -1,7 +1,8 @@
 #pragma once
 // Everything `roomscout report` (and the end of `bench`) writes into its output folder: the
-// tables (report.hpp), the figures (report_figures.hpp) and report.html, one self-contained
-// page with all of them.
+// tables as Markdown (report_markdown.hpp) and CSV (report_csv.hpp), the figures
+// (report_figures.hpp) and report.html (report_html.hpp), one self-contained page with all of
+// them.
 
 #include <cstddef>
 #include <filesystem>
@@ -9,8 +10,6 @@
 #include <vector>
 
 #include "roomscout/experiment/report.hpp"
-#include "roomscout/experiment/report_figures.hpp"
-#include "roomscout/plots/html_report.hpp"
 
 namespace roomscout::experiment {
 
@@ -29,11 +28,11 @@ struct ReportOutput {
   std::size_t truncated = 0;   ///< results files that ended in a truncated line
 };
 
-/// The HTML page of a report: Tables I (with revisits and oracle reference), II, III and, when
-/// the results hold other settings than the main one, IV, then the figures by kind (Fig. 5, 6,
-/// 7, revisits; of the main setting); `notes` under the title.
-plots::HtmlPage reportPage(const Report& report, const std::vector<ReportFigure>& figures,
-                           const std::vector<std::string>& notes = {});
+/// Writes table1.md, table1.csv, table2.md, table3.md and, when the report has other settings,
+/// table4_slam.md into `directory` (created if needed), each atomically; returns their paths.
+/// Throws InputError when it cannot write.
+std::vector<std::filesystem::path> writeReport(const Report& report,
+                                               const std::filesystem::path& directory);
 
 /// Loads the results of `inputs` (loadResults), plans the oracle tours, and writes into `out`
 /// (created if needed): table1.md, table1.csv, table2.md, table3.md, table4_slam.md (when

@@ -50,14 +50,14 @@ const std::vector<StrategyEntry>& strategyRegistry() {
        "ablation of semantic_paper: room-biased sampling, plain score (A = 0)",
        [](std::uint64_t seed) {
          SemanticExplorerOptions o = SemanticExplorerOptions::paper();
-         o.room_reward = 0.0;
+         o.score.room_reward = 0.0;
          return std::make_unique<SemanticExplorer>(seed, o, "semantic_sampling_only");
        }},
       {"semantic_score_only",
        "ablation of semantic_paper: uniform sampling (k = 0), room-aware score",
        [](std::uint64_t seed) {
          SemanticExplorerOptions o = SemanticExplorerOptions::paper();
-         o.k = 0.0;
+         o.tree.k = 0.0;
          return std::make_unique<SemanticExplorer>(seed, o, "semantic_score_only");
        }},
   };
