@@ -23,9 +23,6 @@ namespace fs = std::filesystem;
 namespace roomscout {
 namespace {
 
-/// graph when this build knows it, icp otherwise.
-}
-
 TEST(IntelRawlogTest, ReaderFindsEveryScanWithItsLaserAndOdometry) {
   ROOMSCOUT_DATASET_DIR(data);
   const slam::Rawlog log = slam::readRawlog(data / "slam" / "intel.rawlog");
