@@ -8,7 +8,7 @@
 
 #include "roomscout/core/errors.hpp"
 #include "roomscout/core/random.hpp"
-#include "roomscout/exploration/detail/frontier_cells.hpp"
+#include "roomscout/exploration/frontier_cells.hpp"
 #include "roomscout/maps/semantic_map.hpp"
 
 namespace roomscout {

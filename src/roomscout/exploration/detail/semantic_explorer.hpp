@@ -90,8 +90,8 @@
 
 #include <opencv2/core.hpp>
 
-#include "roomscout/core/detail/grid_remap.hpp"
-#include "roomscout/core/detail/visit_marks.hpp"
+#include "roomscout/core/grid_remap.hpp"
+#include "roomscout/core/visit_marks.hpp"
 #include "roomscout/exploration/detail/rrt_tree.hpp"
 #include "roomscout/exploration/exploration_strategy.hpp"
 
