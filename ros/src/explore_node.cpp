@@ -18,6 +18,7 @@
 #include <actionlib/client/simple_action_client.h>
 #include <move_base_msgs/MoveBaseAction.h>
 #include <nav_msgs/OccupancyGrid.h>
+#include <nav_msgs/Path.h>
 #include <ros/ros.h>
 #include <rosgraph_msgs/Clock.h>
 #include <sensor_msgs/PointCloud2.h>
@@ -28,12 +29,13 @@
 #include <tf2_ros/buffer.h>
 #include <tf2_ros/transform_listener.h>
 #include <visualization_msgs/MarkerArray.h>
+#include <Eigen/Geometry>
 #include <nlohmann/json.hpp>
 
 #include "roomscout/core/errors.hpp"
-#include "roomscout/experiment/episode_setup.hpp"
-#include "roomscout/exploration/detail/frontier_cells.hpp"
+#include "roomscout/exploration/frontier_cells.hpp"
 #include "roomscout/explorer/explorer.hpp"
+#include "roomscout/io/explorer_config.hpp"
 #include "roomscout/mapping/keyframe_selector.hpp"
 #include "roomscout/mapping/point_cloud_map.hpp"
 #include "roomscout_ros/grid_conversions.hpp"
@@ -58,10 +60,12 @@ struct ExploreNodeParams {
   std::string move_base = "move_base";      ///< the MoveBase action's name
   double cycle_period_s = 0.05;    ///< explore cycle period (also on every map and goal result) [s]
   double progress_timeout_s = -1;  ///< a goal whose path has not shrunk this long fails [s];
-                                   ///< < 0: the config's episode.no_progress_timeout_s
+                                   ///< < 0: the config's explorer.no_progress_timeout_s
   int occupied_percent = 65;       ///< map values at or above: occupied (map_server's 0.65)
   int free_percent = 19;           ///< map values at or below: free (map_server's 0.196)
   double marker_period_s = 1.0;    ///< frontier and status publishing period [s]
+  std::string plan_topic;  ///< the driver's plan (nav_msgs/Path), e.g. move_base/NavfnROS/plan:
+                           ///< progress is measured along it; "" = along the Explorer's path
 
   static ExploreNodeParams load(const ros::NodeHandle& pn) {
     ExploreNodeParams p;
@@ -77,6 +81,7 @@ struct ExploreNodeParams {
     p.occupied_percent = typedParam(pn, "occupied_percent", p.occupied_percent);
     p.free_percent = typedParam(pn, "free_percent", p.free_percent);
     p.marker_period_s = typedParam(pn, "marker_period_s", p.marker_period_s);
+    p.plan_topic = typedParam(pn, "plan_topic", p.plan_topic);
     if (p.seed < 0) throw OptionError("~seed must be >= 0, not " + std::to_string(p.seed));
     if (!(p.cycle_period_s > 0.0)) throw OptionError("~cycle_period_s must be > 0");
     if (!(p.marker_period_s > 0.0)) throw OptionError("~marker_period_s must be > 0");
@@ -93,14 +98,13 @@ using MoveBaseClient = actionlib::SimpleActionClient<move_base_msgs::MoveBaseAct
 
 class ExploreNode {
  public:
-  ExploreNode(const ExploreNodeParams& params, experiment::EpisodeSetup setup)
+  ExploreNode(const ExploreNodeParams& params, io::ExplorerConfig config)
       : params_(params),
-        setup_(std::move(setup)),
-        explorer_(std::move(setup_.strategy), explorerOptions(params_, setup_)),
+        explorer_(std::move(config.strategy), explorerOptions(params_, config.explorer)),
         tf_listener_(tf_),
         move_base_(params_.move_base, false),
-        cloud_(setup_.cloud.map),
-        keyframes_(setup_.cloud.keyframes) {
+        cloud_(config.cloud_map),
+        keyframes_(config.keyframes) {
     ros::NodeHandle nh, pn("~");
     map_sub_ =
         nh.subscribe("map", 1, &ExploreNode::onMap, this, ros::TransportHints().tcpNoDelay());
@@ -110,6 +114,8 @@ class ExploreNode {
         "/clock", 1, [](const rosgraph_msgs::Clock::ConstPtr&) {}, ros::VoidConstPtr(),
         ros::TransportHints().tcpNoDelay());
     points_sub_ = nh.subscribe("points", 2, &ExploreNode::onPoints, this);
+    if (!params_.plan_topic.empty())
+      plan_sub_ = nh.subscribe(params_.plan_topic, 1, &ExploreNode::onPlan, this);
     rooms_pub_ = pn.advertise<visualization_msgs::MarkerArray>("rooms", 1, true);
     room_grid_pub_ = pn.advertise<nav_msgs::OccupancyGrid>("room_grid", 1, true);
     skeleton_pub_ = pn.advertise<visualization_msgs::MarkerArray>("skeleton", 1, true);
@@ -155,14 +161,7 @@ class ExploreNode {
   }
 
  private:
-  static ExplorerOptions explorerOptions(const ExploreNodeParams& params,
-                                         experiment::EpisodeSetup& setup) {
-    setup.config.resolve();
-    ExplorerOptions options = setup.config.explorer;
-    // The simulator's 0 (0.1 % of the world's floor) needs a ground truth a robot lacks.
-    if (options.goals.stall_min_new_area_m2 == 0.0) {
-      options.goals.stall_min_new_area_m2 = GoalWatchdogOptions{}.stall_min_new_area_m2;
-    }
+  static ExplorerOptions explorerOptions(const ExploreNodeParams& params, ExplorerOptions options) {
     if (params.progress_timeout_s >= 0.0)
       options.goals.no_progress_timeout_s = params.progress_timeout_s;
     options.all_maps = true;
@@ -207,6 +206,26 @@ class ExploreNode {
     for (; x != x.end(); ++x, ++y, ++z) scratch_points_.push_back(T * Eigen::Vector3f(*x, *y, *z));
     cloud_.insert(scratch_points_);
     cloud_top_m_ = std::max(cloud_top_m_, static_cast<double>(tr.z));
+  }
+
+  /// The driver's plan to the goal it was sent.
+  void onPlan(const nav_msgs::Path::ConstPtr& msg) {
+    if (!msg->header.frame_id.empty() && msg->header.frame_id != params_.map_frame) {
+      ROS_ERROR_THROTTLE(10.0, "plan in frame '%s', expected '%s' (~map_frame): ignored",
+                         msg->header.frame_id.c_str(), params_.map_frame.c_str());
+      return;
+    }
+    driver_path_.waypoints_m.clear();
+    for (const geometry_msgs::PoseStamped& p : msg->poses)
+      driver_path_.waypoints_m.emplace_back(p.pose.position.x, p.pose.position.y);
+  }
+
+  /// The driver's plan, if it leads to the goal sent last (within kPlanEndToGoal_m).
+  const Path* driverPath() const {
+    constexpr double kPlanEndToGoal_m = 0.5;  // a global planner may stop short of the goal
+    if (!goal_active_ || !sent_goal_ || driver_path_.waypoints_m.empty()) return nullptr;
+    if ((driver_path_.waypoints_m.back() - *sent_goal_).norm() > kPlanEndToGoal_m) return nullptr;
+    return &driver_path_;
   }
 
   void onGoalDone(const actionlib::SimpleClientGoalState& state) {
@@ -277,7 +296,9 @@ class ExploreNode {
     }
     const std::optional<CellRect> hint =
         any_changed_ ? std::nullopt : std::optional<CellRect>(changed_);
-    const ExplorerCommand command = explorer_.update(ExplorerInput(*grid_, robot, t, hint));
+    ExplorerInput input(*grid_, robot, t, hint);
+    input.driver_path = driverPath();
+    const ExplorerCommand command = explorer_.update(input);
     ++cycles_;
     last_update_s_ = t;
     any_changed_ = false;
@@ -418,7 +439,6 @@ class ExploreNode {
   }
 
   ExploreNodeParams params_;
-  experiment::EpisodeSetup setup_;
   Explorer explorer_;
   tf2_ros::Buffer tf_;
   tf2_ros::TransformListener tf_listener_;
@@ -428,7 +448,7 @@ class ExploreNode {
   std::vector<Eigen::Vector3f> scratch_points_;
   double cloud_top_m_ = 0.0;
 
-  ros::Subscriber map_sub_, points_sub_, clock_sub_;
+  ros::Subscriber map_sub_, points_sub_, clock_sub_, plan_sub_;
   ros::Publisher rooms_pub_, room_grid_pub_, skeleton_pub_, frontier_pub_, goal_pub_, status_pub_,
       cycle_pub_;
   ros::ServiceServer save_srv_;
@@ -443,6 +463,7 @@ class ExploreNode {
   std::optional<GoalOutcome> pending_outcome_;
   bool goal_active_ = false;
   std::optional<Vec2> sent_goal_;
+  Path driver_path_;  ///< the driver's last plan (~plan_topic)
   std::string reason_;
   int published_room_updates_ = -1, published_skeleton_updates_ = -1;
   long cycles_ = 0;      ///< Explorer updates so far
@@ -462,11 +483,10 @@ int main(int argc, char** argv) {
   try {
     ros::NodeHandle pn("~");
     params = ros1::ExploreNodeParams::load(pn);
-    experiment::RunSettings settings;
-    settings.config_file = params.config;
-    experiment::EpisodeSetup setup = experiment::makeEpisodeSetup(
-        params.method, static_cast<std::uint64_t>(params.seed), settings);
-    node = std::make_unique<ros1::ExploreNode>(params, std::move(setup));
+    io::ExplorerConfig config = io::loadExplorerConfig(
+        params.method, static_cast<std::uint64_t>(params.seed), params.config);
+    for (const std::string& w : config.warnings) ROS_WARN("%s", w.c_str());
+    node = std::make_unique<ros1::ExploreNode>(params, std::move(config));
   } catch (const std::exception& e) {
     std::cerr << "roomscout_explore_node: " << e.what() << "\n";
     ROS_FATAL("%s", e.what());

@@ -1,12 +1,13 @@
 // roomscout_sim_node: the project's simulator as a ROS 1 node. It stands in for the robot, its
 // SLAM and move_base, so that an explorer node runs over ROS on a laptop without Gazebo.
 //
-// One thread runs the episode loop of sim/episode.cpp with ROS in place of the in-process
-// Explorer: each step publishes /clock, tf (map -> odom identity, odom -> base the true pose)
-// and odom; at the laser's rate a simulated scan is mapped into the full-world grid and
-// published; the map is published as a SLAM package grows it; the exploration rate against
-// ground truth is published on ~status. Goals arrive through a move_base action server that
-// plans with the library's A* over its costmap and drives with its path follower.
+// One thread steps a sim::Simulation (the loop `roomscout explore` runs, with the same config
+// groups: noise, slam and episode.map_mode included) with ROS in place of the in-process
+// Explorer: each step publishes /clock, tf (map -> odom from the SLAM estimate, identity
+// without SLAM; odom -> base the wheel odometry) and odom; each scan is published; the map is
+// published as the simulation publishes it; the exploration rate against ground truth is
+// published on ~status. Goals arrive through a FakeMoveBase: the move_base action over the
+// library's costmap, A* and path follower.
 //
 // Lockstep (~goal_wait_s): while no goal is active, simulated time is held for a while, so
 // that an explorer's thinking costs no simulated time however fast the clock runs. With
@@ -49,19 +50,12 @@
 
 #include "roomscout/core/errors.hpp"
 #include "roomscout/experiment/episode_setup.hpp"
-#include "roomscout/mapping/occupancy_mapper.hpp"
-#include "roomscout/planning/astar_planner.hpp"
-#include "roomscout/planning/costmap.hpp"
-#include "roomscout/planning/detail/path_blocking.hpp"
-#include "roomscout/planning/path_follower.hpp"
 #include "roomscout/sim/column_world.hpp"
-#include "roomscout/sim/episode.hpp"
-#include "roomscout/sim/exploration_truth.hpp"
-#include "roomscout/sim/laser_simulator.hpp"
 #include "roomscout/sim/lidar_simulator.hpp"
-#include "roomscout/sim/robot.hpp"
+#include "roomscout/sim/simulation.hpp"
 #include "roomscout/sim/world_model.hpp"
 #include "roomscout/sim/world_source.hpp"
+#include "roomscout_ros/fake_move_base.hpp"
 #include "roomscout_ros/grid_conversions.hpp"
 #include "roomscout_ros/node_params.hpp"
 
@@ -70,9 +64,7 @@ namespace {
 
 /// Added to the simulated time for every stamp and /clock, so that no stamp is zero [s].
 constexpr double kClockOffset_s = 1e-3;
-/// Speed of the back-off after the robot was blocked, as the episode's recovery [m/s].
-constexpr double kBackOffSpeed_mps = -0.1;
-/// Tolerance of the schedules (scan, lidar, metrics, map) against the accumulated time [s].
+/// Tolerance of the schedules (lidar, map) against the accumulated time [s].
 constexpr double kScheduleSlack_s = 1e-9;
 /// Falling this far behind the real-time factor's schedule restarts the schedule rather than
 /// catching up with a burst of steps [wall s].
@@ -84,12 +76,6 @@ constexpr double kHoldPoll_s = 0.002;
 std::atomic<bool> g_stop_requested{false};
 
 void requestStop(int) { g_stop_requested = true; }
-
-/// Goals within `radius_m` of `center_m` (map frame) are aborted at once (fault injection).
-struct AbortZone {
-  Vec2 center_m = Vec2::Zero();
-  double radius_m = 0.0;
-};
 
 /// The node's private parameters.
 struct NodeParameters {
@@ -204,6 +190,7 @@ struct Scenario {
   std::unique_ptr<const sim::WorldModel> model;
   sim::EpisodeConfig config;  ///< resolved and validated
   sim::LidarOptions lidar;    ///< the config's "lidar" group
+  sim::RangeNoise lidar_noise;
 };
 
 /// Loads the world and the config; throws OptionError naming the parameter at fault.
@@ -217,7 +204,9 @@ Scenario loadScenario(const NodeParameters& p) {
     const experiment::EpisodeSetup setup =
         experiment::makeEpisodeSetup("nearest_frontier", p.seed, settings);
     s.config = setup.config;
+    for (const std::string& w : setup.warnings) ROS_WARN("%s", w.c_str());
     s.lidar = setup.cloud.lidar;
+    s.lidar_noise = setup.cloud.lidar_noise;
   } catch (const std::exception& e) {
     // Messages about an option's value do not name the file; those about the file do.
     const std::string what = e.what();
@@ -236,51 +225,19 @@ Scenario loadScenario(const NodeParameters& p) {
   return s;
 }
 
-const char* planStatusText(PlanStatus status) {
-  switch (status) {
-    case PlanStatus::kFound:
-      return "path found";
-    case PlanStatus::kStartBlocked:
-      return "the robot's cell is blocked";
-    case PlanStatus::kGoalBlocked:
-      return "the goal is blocked";
-    case PlanStatus::kNoPath:
-      return "no path";
-  }
-  return "no path";
-}
-
-/// A frame name without the leading slash tf1 allowed.
-std::string bareFrame(const std::string& frame) {
-  return !frame.empty() && frame.front() == '/' ? frame.substr(1) : frame;
-}
-
-/// The simulated robot, mapper and move_base behind the node's topics and action server.
+/// The simulation, its lidar and the fake move_base behind the node's topics.
 class SimNode {
  public:
   SimNode(const NodeParameters& params, Scenario scenario);
 
-  /// Runs the episode until SIGINT/SIGTERM or ROS shuts down; aborts the active goal then.
+  /// Runs until SIGINT/SIGTERM or ROS shuts down; aborts the active goal then.
   void run();
 
  private:
-  using Server = actionlib::ActionServer<move_base_msgs::MoveBaseAction>;
-  using GoalHandle = Server::GoalHandle;
-  enum class GoalEnd { kSucceeded, kAborted, kCanceled };
-
-  /// The goal being driven to.
-  struct ActiveGoal {
-    GoalHandle handle;
-    Vec2 target_m = Vec2::Zero();
-    bool recovered = false;                  ///< the one back-off of this goal was spent
-    std::optional<double> back_off_until_s;  ///< backing off until then, then replanning
-  };
-
-  // Steps of the loop.
   /// Everything observable at the current time: clock, pose, scan, point cloud, status, map;
-  /// then the goal is checked against what the scan showed.
+  /// then the fake move_base checks its goal against what the scan showed.
   void sense();
-  /// Drives for one step: back-off, path following or standing still; detects a blocked robot.
+  /// Drives for one step and advances the clock; reports a blocked robot to move_base.
   void act();
   /// Stops the robot, aborts the goal and reports the final rate once the time limit is passed.
   void timeOut();
@@ -290,37 +247,14 @@ class SimNode {
   void shutdown();
 
   // Publishing.
-  ros::Time stamp() const { return ros::Time(kClockOffset_s + t_); }
-  /// map -> odom (identity: no odometry drift is simulated) and odom -> base (the true pose).
+  ros::Time stamp() const { return ros::Time(kClockOffset_s + idle_s_ + sim_.time_s()); }
+  /// map -> odom (the SLAM's correction of the odometry) and odom -> base (the odometry).
   tf2_msgs::TFMessage transforms(const ros::Time& stamp) const;
   void publishClockAndPose(const ros::Time& stamp);
-  /// Takes a scan, maps it and publishes it; returns the cells the scan may have changed.
-  CellRect scanAndMap(const ros::Time& stamp);
+  void publishScan(const LaserScan& scan, const ros::Time& stamp);
   void publishPoints(const ros::Time& stamp);
   void publishMap(const ros::Time& stamp);
-  void sampleMetrics();
   void publishStatus();
-  void publishFeedback(const ros::Time& stamp);
-
-  // move_base.
-  void onGoal(GoalHandle handle);
-  void onCancel(GoalHandle handle);
-  /// Why a goal is aborted before planning (frame, values, fault zone), or nothing.
-  struct Refusal {
-    std::string text;
-    bool logged = false;  ///< warned about already
-  };
-  std::optional<Refusal> refusal(const move_base_msgs::MoveBaseGoal& goal) const;
-  /// Plans from the robot to the active goal on the current map; false (with `why`) if none.
-  bool replan(std::string& why);
-  /// True when an occupied cell lies within the lethal radius of a waypoint ahead of the
-  /// robot that the laser can have seen (pathBlockedAhead, as the Explorer checks).
-  bool pathBlocked() const;
-  /// Checks the active goal after a scan: back-off over, path blocked, goal reached.
-  void monitorGoal(const CellRect& changed, bool scanned, const ros::Time& stamp);
-  void onBlocked();
-  /// Ends the active goal; `log` = false when the caller has said why already.
-  void endGoal(GoalEnd end, const std::string& text, bool log = true);
 
   // Lockstep and pacing.
   void beginHold();
@@ -333,10 +267,11 @@ class SimNode {
   void resetPacing();
   /// Waits, serving callbacks, until the wall clock catches up with the real-time factor.
   void pace();
+  double now_s() const { return idle_s_ + sim_.time_s(); }
 
   NodeParameters params_;
   std::unique_ptr<const sim::WorldModel> model_;
-  sim::EpisodeConfig config_;
+  sim::Simulation sim_;
 
   // ROS interfaces.
   ros::NodeHandle nh_;
@@ -344,51 +279,18 @@ class SimNode {
   ros::Publisher clock_pub_, odom_pub_, scan_pub_, map_pub_, status_pub_, points_pub_;
   ros::Publisher
       tf_pub_;  ///< /tf, as tf2_ros::TransformBroadcaster, plus a catch-up for new subscribers
-  Server server_;
+  FakeMoveBase move_base_;
 
-  // The simulated world, robot and sensors.
-  GridGeometry full_geometry_;
-  OccupancyGrid grid_;  ///< the mapper's grid over the whole world
-  OccupancyMapper mapper_;
-  sim::LaserSimulator laser_;
-  sim::Robot robot_;
   std::unique_ptr<sim::ColumnWorld> columns_;  ///< only with ~points
   std::unique_ptr<sim::LidarSimulator> lidar_;
 
-  // move_base's planning and control.
-  PathFollower follower_;
-  Costmap costmap_;
-  AStarPlanner planner_;
-  CellRect costmap_stale_;  ///< cells changed since the costmap's last update
-  bool costmap_built_ = false;
-  std::vector<Cell> lethal_disc_;
-
-  // Ground truth.
-  sim::ExplorationTruth truth_;
-  sim::ExplorationRateCounter rate_counter_;
-  double max_time_s_ = 0.0;
-
-  // Simulated time and schedules.
-  double t_ = 0.0;
-  double next_scan_s_ = 0.0, next_lidar_s_ = 0.0, next_metrics_s_ = 0.0, next_map_s_ = 0.0;
+  double next_lidar_s_ = 0.0, next_map_s_ = 0.0;
+  double idle_s_ = 0.0;       ///< time run after the time limit, the robot standing still [s]
   VelocityCommand velocity_;  ///< commanded over the last step
-  double blocked_for_s_ = 0.0;
-  bool timed_out_ = false;
+  CellRect changed_since_monitor_;
+  bool t98_logged_ = false;
 
-  // The published (growing) map.
-  int margin_cells_ = 0;
-  CellRect known_cells_;
-  CellRect changed_since_map_;
-  OccupancyGrid published_;
-
-  // Metrics.
-  CellRect changed_since_sample_;
-  double rate_ = 0.0;
-  std::optional<double> t98_s_, l98_m_;
-  int goals_received_ = 0, goals_succeeded_ = 0, goals_aborted_ = 0, goals_canceled_ = 0;
-
-  // The goal, lockstep and pacing.
-  std::optional<ActiveGoal> goal_;
+  // Lockstep and pacing.
   std::optional<ros::WallTime> hold_since_;
   // Step lockstep (~sync_topic): the stamp of the last state published, the latest time the
   // explorer says it caught up to, and since when the loop waits for it.
@@ -400,34 +302,35 @@ class SimNode {
   double pace_t_ = 0.0;
 };
 
+FakeMoveBaseOptions moveBaseOptions(const NodeParameters& params, const sim::Simulation& sim) {
+  FakeMoveBaseOptions o;
+  const ExplorerOptions explorer = sim.explorerOptions();
+  o.costmap = explorer.costmap;
+  o.planner = explorer.planner;
+  o.follower = sim.config().follower;
+  o.sensor_range_m = explorer.goals.sensor_range_m;
+  o.recovery_time_s = explorer.goals.recovery_time_s;
+  o.map_frame = params.map_frame;
+  o.abort_zone = params.abort_zone;
+  return o;
+}
+
 SimNode::SimNode(const NodeParameters& params, Scenario scenario)
     : params_(params),
       model_(std::move(scenario.model)),
-      config_(scenario.config),
-      server_(
-          nh_, "move_base", [this](GoalHandle h) { onGoal(h); },
-          [this](GoalHandle h) { onCancel(h); }, false),
-      full_geometry_(sim::mapGeometryFor(*model_, config_.mapping.resolution_m)),
-      grid_(full_geometry_, config_.mapping),
-      mapper_(grid_),
-      laser_(*model_, config_.laser, params_.seed ^ 0x9E3779B97F4A7C15ull),
-      robot_(*model_, config_.robot, model_->start()),
-      follower_(config_.follower),
-      costmap_(config_.explorer.costmap),
-      planner_(config_.explorer.planner),
-      lethal_disc_(
-          discOffsets(config_.explorer.costmap.lethalRadius_m() / full_geometry_.resolution_m())),
-      // Reachable = what the robot's navigation footprint can cover, as runEpisode scores it.
-      truth_(*model_, full_geometry_, config_.explorer.costmap.lethalRadius_m()),
-      rate_counter_(truth_) {
-  const sim::EpisodeOptions& episode = config_.episode;
-  max_time_s_ =
-      episode.max_time_s > 0.0 ? episode.max_time_s : 600.0 + 5.0 * truth_.reachableArea_m2();
-  margin_cells_ = static_cast<int>(std::ceil(episode.map_margin_m / full_geometry_.resolution_m()));
+      sim_(*model_, scenario.config, params_.seed),
+      move_base_(nh_, moveBaseOptions(params_, sim_),
+                 FakeMoveBase::Hooks{[this] { endHold(); },
+                                     [this] {
+                                       velocity_ = {};
+                                       // The goal counts at once (time may be held).
+                                       publishStatus();
+                                       beginHold();
+                                     }}) {
   if (params_.points) {
     columns_ = std::make_unique<sim::ColumnWorld>(*model_);
-    lidar_ = std::make_unique<sim::LidarSimulator>(*columns_, scenario.lidar,
-                                                   params_.seed ^ 0x5851F42D4C957F2Dull);
+    lidar_ = std::make_unique<sim::LidarSimulator>(
+        *columns_, scenario.lidar, params_.seed ^ 0x5851F42D4C957F2Dull, scenario.lidar_noise);
   }
 
   // Latched, and the transforms sent to each new /tf subscriber while time is held: a node
@@ -454,16 +357,18 @@ SimNode::SimNode(const NodeParameters& params, Scenario scenario)
 }
 
 void SimNode::run() {
-  server_.start();
+  move_base_.start();
   const sim::World& world = model_->world();
   const std::string pacing = params_.real_time_factor > 0.0
                                  ? "real-time factor " + formatNumber(params_.real_time_factor)
                                  : "as fast as possible";
   ROS_INFO(
       "roomscout_sim_node: world %s (%s), reachable %.1f m^2, time limit %.0f s, step %g s, %s, "
-      "goal wait %g s",
-      world.name.c_str(), world.source.c_str(), truth_.reachableArea_m2(), max_time_s_,
-      config_.episode.dt_s, pacing.c_str(), params_.goal_wait_s);
+      "goal wait %g s, noise %s, slam %s, map %s",
+      world.name.c_str(), world.source.c_str(), sim_.reachableArea_m2(), sim_.maxTime_s(),
+      sim_.config().episode.dt_s, pacing.c_str(), params_.goal_wait_s,
+      sim_.config().noise.profile.c_str(), sim_.config().slam.mode.c_str(),
+      sim_.config().episode.map_mode.c_str());
   sense();  // the state at time 0, for the explorer's first goal
   beginHold();
   resetPacing();
@@ -471,14 +376,13 @@ void SimNode::run() {
   while (ros::ok() && !g_stop_requested) {
     queue.callAvailable(ros::WallDuration(hold_since_ || sync_since_ ? kHoldPoll_s : 0.0));
     if (g_stop_requested || !ros::ok()) break;
-    if (timed_out_) {
+    if (sim_.timedOut()) {
       idle();
       continue;
     }
     if (holding() || awaitingExplorer()) continue;
     act();
-    t_ += config_.episode.dt_s;
-    if (t_ > max_time_s_) {
+    if (sim_.timedOut()) {
       timeOut();
       continue;
     }
@@ -490,89 +394,77 @@ void SimNode::run() {
 
 void SimNode::sense() {
   const ros::Time now = stamp();
+  const sim::Sensed sensed = sim_.sense();
   publishClockAndPose(now);
-  CellRect changed;
-  const bool scanned = t_ >= next_scan_s_ - kScheduleSlack_s;
-  if (scanned) {
-    changed = scanAndMap(now);
-    next_scan_s_ += 1.0 / config_.laser.rate_hz;
-  }
-  if (lidar_ && t_ >= next_lidar_s_ - kScheduleSlack_s) {
+  changed_since_monitor_.unite(sensed.changed);
+  if (sensed.scan) publishScan(*sensed.scan, now);
+  if (lidar_ && sim_.time_s() >= next_lidar_s_ - kScheduleSlack_s) {
     publishPoints(now);
     next_lidar_s_ += 1.0 / lidar_->options().rate_hz;
   }
-  if (t_ >= next_metrics_s_ - kScheduleSlack_s) {
-    sampleMetrics();
+  if (sensed.sampled) {
+    if (sim_.t98_s() && !t98_logged_) {
+      t98_logged_ = true;
+      ROS_INFO(
+          "roomscout_sim_node: exploration rate %.1f %% reached at %.1f s simulated, %.1f m "
+          "driven",
+          100.0 * sim_.rate(), *sim_.t98_s(), *sim_.l98_m());
+    }
     publishStatus();
-    next_metrics_s_ += config_.episode.metrics_period_s;
   }
-  const bool map_due = params_.map_period_s > 0.0 ? t_ >= next_map_s_ - kScheduleSlack_s : scanned;
+  const bool map_due = params_.map_period_s > 0.0 ? sim_.time_s() >= next_map_s_ - kScheduleSlack_s
+                                                  : sensed.scan.has_value();
   if (map_due) {
     publishMap(now);
     // Skip missed periods rather than publishing a burst (a period shorter than the step).
-    while (params_.map_period_s > 0.0 && next_map_s_ <= t_ + kScheduleSlack_s)
+    while (params_.map_period_s > 0.0 && next_map_s_ <= sim_.time_s() + kScheduleSlack_s)
       next_map_s_ += params_.map_period_s;
   }
-  monitorGoal(changed, scanned, now);
+  move_base_.monitor(sim_.grid(), changed_since_monitor_, sim_.estimate(), sim_.time_s(),
+                     sensed.scan ? std::optional<ros::Time>(now) : std::nullopt);
+  changed_since_monitor_ = CellRect{};
   sync_stamp_ = now;
 }
 
 void SimNode::act() {
-  const double dt = config_.episode.dt_s;
-  velocity_ = {};
-  bool following = false;
-  if (goal_ && goal_->back_off_until_s) {
-    velocity_.linear_mps = kBackOffSpeed_mps;  // away from whatever the robot is pressed against
-  } else if (goal_) {
-    velocity_ = follower_.compute(robot_.pose());
-    following = true;
-  }
-  const bool moved = robot_.step(velocity_, dt);
-  if (following && velocity_.linear_mps > 0.0 && !moved) {
-    blocked_for_s_ += dt;
-    if (blocked_for_s_ >= config_.episode.stuck_timeout_s) {
-      blocked_for_s_ = 0.0;
-      onBlocked();
-    }
-  } else {
-    blocked_for_s_ = 0.0;
-  }
+  velocity_ = move_base_.command(sim_.estimate());
+  const bool blocked = sim_.act(velocity_);
+  sim_.step();
+  if (blocked) move_base_.onBlocked(sim_.time_s());
 }
 
 void SimNode::timeOut() {
-  timed_out_ = true;
   hold_since_.reset();
-  if (goal_) endGoal(GoalEnd::kAborted, "simulated time limit reached");
+  move_base_.refuseGoals("simulated time limit reached");
+  move_base_.abort("simulated time limit reached");
   velocity_ = {};
-  sampleMetrics();
+  sim_.finish();
   publishStatus();
   publishClockAndPose(stamp());
   ROS_INFO(
       "roomscout_sim_node: time limit %.0f s reached at %.1f m driven, exploration rate %.1f %%; "
       "the robot stands still and /clock runs at real time",
-      max_time_s_, robot_.odometer_m(), 100.0 * rate_);
+      sim_.maxTime_s(), sim_.odometer_m(), 100.0 * sim_.rate());
   resetPacing();
 }
 
 void SimNode::idle() {
-  const double dt = config_.episode.dt_s;
+  const double dt = sim_.config().episode.dt_s;
   ros::WallDuration(dt).sleep();
-  t_ += dt;
+  idle_s_ += dt;
   publishClockAndPose(stamp());
 }
 
 void SimNode::shutdown() {
-  if (goal_) {
-    goal_->handle.setAborted(move_base_msgs::MoveBaseResult(), "simulator shutting down");
-    ++goals_aborted_;
-    goal_.reset();
-    publishStatus();
-    // The result and the status go out on roscpp's own threads; give them a moment before shutting
-    // down.
+  move_base_.refuseGoals("simulator shutting down");
+  if (move_base_.active()) {
+    move_base_.abort("simulator shutting down");
+    // The result and the status go out on roscpp's own threads; give them a moment before
+    // shutting down.
     ros::WallDuration(0.2).sleep();
   }
-  ROS_INFO("roomscout_sim_node: shutting down at %.1f s simulated, exploration rate %.1f %%", t_,
-           100.0 * rate_);
+  ROS_INFO("roomscout_sim_node: shutting down at %.1f s simulated, exploration rate %.1f %%",
+           now_s(), 100.0 * sim_.rate());
   ros::shutdown();
 }
 
@@ -587,41 +479,46 @@ void SimNode::publishClockAndPose(const ros::Time& stamp) {
   odom.header.stamp = stamp;
   odom.header.frame_id = params_.odom_frame;
   odom.child_frame_id = params_.base_frame;
-  odom.pose.pose = toPoseMsg(robot_.pose());
+  odom.pose.pose = toPoseMsg(sim_.odometryPose());
   odom.twist.twist.linear.x = velocity_.linear_mps;
   odom.twist.twist.angular.z = velocity_.angular_radps;
   odom_pub_.publish(odom);
 }
 
+/// The rigid transform of a planar pose.
+Eigen::Isometry2d isometry(const Pose2& pose) {
+  return Eigen::Translation2d(pose.x_m, pose.y_m) * Eigen::Rotation2Dd(pose.yaw_rad);
+}
+
 tf2_msgs::TFMessage SimNode::transforms(const ros::Time& stamp) const {
-  const Pose2& pose = robot_.pose();
+  // T_map_odom = T_map_base (the estimate) * T_odom_base^-1 (the odometry): the identity
+  // without SLAM, where both are the true pose.
+  const Pose2& odometry = sim_.odometryPose();
+  const Eigen::Isometry2d T_map_odom =
+      sim_.hasSlam() ? isometry(sim_.estimate()) * isometry(odometry).inverse()
+                     : Eigen::Isometry2d::Identity();
+  const Pose2 map_odom_pose{T_map_odom.translation().x(), T_map_odom.translation().y(),
+                            std::atan2(T_map_odom.linear()(1, 0), T_map_odom.linear()(0, 0))};
   tf2_msgs::TFMessage msg;
   msg.transforms.resize(2);
   geometry_msgs::TransformStamped& map_odom = msg.transforms[0];
   map_odom.header.stamp = stamp;
   map_odom.header.frame_id = params_.map_frame;
   map_odom.child_frame_id = params_.odom_frame;
-  map_odom.transform.rotation.w = 1.0;
+  map_odom.transform.translation.x = map_odom_pose.x_m;
+  map_odom.transform.translation.y = map_odom_pose.y_m;
+  map_odom.transform.rotation = toPoseMsg(map_odom_pose).orientation;
   geometry_msgs::TransformStamped& odom_base = msg.transforms[1];
   odom_base.header.stamp = stamp;
   odom_base.header.frame_id = params_.odom_frame;
   odom_base.child_frame_id = params_.base_frame;
-  odom_base.transform.translation.x = pose.x_m;
-  odom_base.transform.translation.y = pose.y_m;
-  odom_base.transform.rotation = toPoseMsg(pose).orientation;
+  odom_base.transform.translation.x = odometry.x_m;
+  odom_base.transform.translation.y = odometry.y_m;
+  odom_base.transform.rotation = toPoseMsg(odometry).orientation;
   return msg;
 }
 
-CellRect SimNode::scanAndMap(const ros::Time& stamp) {
-  // The laser sits on the robot's centre: the sensor pose is the robot pose.
-  const LaserScan scan = laser_.scan(robot_.pose());
-  const CellRect changed = mapper_.integrate(scan, robot_.pose());
-  changed_since_sample_.unite(changed);
-  changed_since_map_.unite(changed);
-  costmap_stale_.unite(changed);
-  // The cells a scan touched are known (a hit or a miss classifies a cell at once).
-  known_cells_.unite(changed);
-
+void SimNode::publishScan(const LaserScan& scan, const ros::Time& stamp) {
   sensor_msgs::LaserScan msg;
   msg.header.stamp = stamp;
   msg.header.frame_id = params_.base_frame;
@@ -631,18 +528,18 @@ CellRect SimNode::scanAndMap(const ros::Time& stamp) {
   msg.angle_max =
       static_cast<float>(scan.angle_min_rad + scan.angle_increment_rad * (n > 0 ? n - 1 : 0));
   msg.time_increment = 0.0f;
-  msg.scan_time = static_cast<float>(1.0 / config_.laser.rate_hz);
+  msg.scan_time = static_cast<float>(1.0 / sim_.config().laser.rate_hz);
   msg.range_min = static_cast<float>(scan.range_min_m);
   msg.range_max = static_cast<float>(scan.range_max_m);
   msg.ranges = scan.ranges_m;
   scan_pub_.publish(msg);
-  return changed;
 }
 
 void SimNode::publishPoints(const ros::Time& stamp) {
   // A revolution costs milliseconds: cast only when someone listens.
   if (points_pub_.getNumSubscribers() == 0) return;
-  const Pose2& pose = robot_.pose();
+  // The lidar sees from the true pose; its points go out in the robot's frame.
+  const Pose2& pose = sim_.robotPose();
   const sim::LidarScan scan = lidar_->scan(pose);
   const Eigen::Isometry3d T_map_base = Eigen::Translation3d(pose.x_m, pose.y_m, 0.0) *
                                        Eigen::AngleAxisd(pose.yaw_rad, Eigen::Vector3d::UnitZ());
@@ -672,209 +569,41 @@ void SimNode::publishPoints(const ros::Time& stamp) {
 }
 
 void SimNode::publishMap(const ros::Time& stamp) {
-  // As a SLAM package: the known area's bounding box plus the margin, the origin moving as
-  // the map grows (episode.cpp's growing mode).
-  const GridGeometry g = sim::publishedGeometry(full_geometry_, known_cells_, margin_cells_);
-  if (g != published_.geometry()) {
-    published_ = grid_.reframed(g);
-  } else {
-    published_.copyCells(grid_, changed_since_map_);
-  }
-  changed_since_map_ = CellRect{};
+  const sim::PublishedMap map = sim_.publishMap();
   nav_msgs::OccupancyGrid msg;
-  toMsg(published_, msg);
+  toMsg(map.grid, msg);
   msg.header.stamp = stamp;
   msg.header.frame_id = params_.map_frame;
   msg.info.map_load_time = stamp;
   map_pub_.publish(msg);
 }
 
-void SimNode::sampleMetrics() {
-  rate_counter_.update(grid_, changed_since_sample_);
-  changed_since_sample_ = CellRect{};
-  rate_ = rate_counter_.rate();
-  if (!t98_s_ && rate_ >= config_.episode.completion_rate) {
-    t98_s_ = t_;
-    l98_m_ = robot_.odometer_m();
-    ROS_INFO(
-        "roomscout_sim_node: exploration rate %.1f %% reached at %.1f s simulated, %.1f m driven",
-        100.0 * rate_, t_, robot_.odometer_m());
-  }
-}
-
 void SimNode::publishStatus() {
   auto optional = [](const std::optional<double>& v) {
     return v ? nlohmann::json(*v) : nlohmann::json(nullptr);
   };
+  const FakeMoveBase::Counts& goals = move_base_.counts();
   const nlohmann::json status = {
-      {"time_s", t_},
-      {"length_m", robot_.odometer_m()},
-      {"rate", rate_},
-      {"t98_s", optional(t98_s_)},
-      {"l98_m", optional(l98_m_)},
-      {"reachable_area_m2", truth_.reachableArea_m2()},
-      {"max_time_s", max_time_s_},
-      {"timed_out", timed_out_},
-      {"goals_received", goals_received_},
-      {"goals_succeeded", goals_succeeded_},
-      {"goals_aborted", goals_aborted_},
-      {"goals_canceled", goals_canceled_},
+      {"time_s", now_s()},
+      {"length_m", sim_.odometer_m()},
+      {"rate", sim_.rate()},
+      {"t98_s", optional(sim_.t98_s())},
+      {"l98_m", optional(sim_.l98_m())},
+      {"reachable_area_m2", sim_.reachableArea_m2()},
+      {"max_time_s", sim_.maxTime_s()},
+      {"timed_out", sim_.timedOut()},
+      {"goals_received", goals.received},
+      {"goals_succeeded", goals.succeeded},
+      {"goals_aborted", goals.aborted},
+      {"goals_canceled", goals.canceled},
   };
   std_msgs::String msg;
   msg.data = status.dump();
   status_pub_.publish(msg);
 }
 
-void SimNode::publishFeedback(const ros::Time& stamp) {
-  move_base_msgs::MoveBaseFeedback feedback;
-  feedback.base_position.header.stamp = stamp;
-  feedback.base_position.header.frame_id = params_.map_frame;
-  feedback.base_position.pose = toPoseMsg(robot_.pose());
-  goal_->handle.publishFeedback(feedback);
-}
-
-void SimNode::onGoal(GoalHandle handle) {
-  ++goals_received_;
-  handle.setAccepted();
-  if (goal_) {
-    // A new goal preempts the old one, as move_base does.
-    goal_->handle.setCanceled(move_base_msgs::MoveBaseResult(), "preempted by a new goal");
-    ++goals_canceled_;
-    goal_.reset();
-    follower_.clear();
-  }
-  const move_base_msgs::MoveBaseGoal& goal = *handle.getGoal();
-  const geometry_msgs::Point& p = goal.target_pose.pose.position;
-  goal_.emplace();
-  goal_->handle = handle;
-  goal_->target_m = Vec2(p.x, p.y);
-  blocked_for_s_ = 0.0;
-  if (const std::optional<Refusal> r = refusal(goal)) {
-    endGoal(GoalEnd::kAborted, r->text, !r->logged);
-    return;
-  }
-  std::string why;
-  if (!replan(why)) {
-    endGoal(GoalEnd::kAborted, why);
-    return;
-  }
-  endHold();
-  ROS_DEBUG("roomscout_sim_node: driving to (%.2f, %.2f)", p.x, p.y);
-}
-
-void SimNode::onCancel(GoalHandle handle) {
-  if (goal_ && goal_->handle == handle) endGoal(GoalEnd::kCanceled, "canceled");
-}
-
-std::optional<SimNode::Refusal> SimNode::refusal(const move_base_msgs::MoveBaseGoal& goal) const {
-  if (timed_out_) return Refusal{"simulated time limit reached"};
-  if (g_stop_requested) return Refusal{"simulator shutting down"};
-  const std::string frame = bareFrame(goal.target_pose.header.frame_id);
-  if (!frame.empty() && frame != params_.map_frame) {
-    return Refusal{"goal frame \"" + goal.target_pose.header.frame_id +
-                   "\" is not the map frame \"" + params_.map_frame + "\""};
-  }
-  const geometry_msgs::Point& p = goal.target_pose.pose.position;
-  if (!std::isfinite(p.x) || !std::isfinite(p.y)) return Refusal{"goal position is not finite"};
-  if (params_.abort_zone &&
-      (Vec2(p.x, p.y) - params_.abort_zone->center_m).norm() <= params_.abort_zone->radius_m) {
-    ROS_WARN(
-        "roomscout_sim_node: aborting the goal (%.2f, %.2f): within %.2f m of (%.2f, %.2f) "
-        "(~abort_goals_near)",
-        p.x, p.y, params_.abort_zone->radius_m, params_.abort_zone->center_m.x(),
-        params_.abort_zone->center_m.y());
-    return Refusal{"goal inside the ~abort_goals_near zone (fault injection)", true};
-  }
-  return std::nullopt;
-}
-
-bool SimNode::replan(std::string& why) {
-  if (!costmap_built_ || !costmap_stale_.empty()) {
-    costmap_.update(grid_, costmap_stale_);  // the first call builds it from the whole grid
-    costmap_built_ = true;
-    costmap_stale_ = CellRect{};
-  }
-  const PlanResult plan = planner_.plan(costmap_, robot_.pose().position(), goal_->target_m);
-  if (plan.status != PlanStatus::kFound) {
-    why = std::string("no path to the goal: ") + planStatusText(plan.status);
-    return false;
-  }
-  follower_.setPath(plan.path);
-  return true;
-}
-
-bool SimNode::pathBlocked() const {
-  if (!follower_.hasPath()) return false;
-  // Beyond the laser's range a new scan cannot have blocked the path.
-  const double horizon_m =
-      config_.laser.range_max_m + config_.explorer.costmap.lethalRadius_m() + 0.5;
-  return pathBlockedAhead(grid_, follower_.path().waypoints_m, follower_.progressIndex(),
-                          robot_.pose().position(), horizon_m, lethal_disc_);
-}
-
-void SimNode::monitorGoal(const CellRect& changed, bool scanned, const ros::Time& stamp) {
-  if (!goal_) return;
-  std::string why;
-  if (goal_->back_off_until_s) {
-    if (t_ < *goal_->back_off_until_s - kScheduleSlack_s) return;
-    goal_->back_off_until_s.reset();
-    if (!replan(why)) endGoal(GoalEnd::kAborted, "blocked, and after backing off " + why);
-    return;
-  }
-  if (!changed.empty() && pathBlocked() && !replan(why)) {
-    endGoal(GoalEnd::kAborted, "path blocked by a newly seen obstacle, " + why);
-    return;
-  }
-  if (follower_.reached(robot_.pose())) {
-    endGoal(GoalEnd::kSucceeded, "goal reached");
-    return;
-  }
-  if (scanned) publishFeedback(stamp);
-}
-
-void SimNode::onBlocked() {
-  if (goal_->recovered) {
-    endGoal(GoalEnd::kAborted, "robot blocked again after a back-off");
-    return;
-  }
-  // As the episode's recovery: back off for a while, then plan afresh from there.
-  goal_->recovered = true;
-  goal_->back_off_until_s = t_ + config_.episode.dt_s + config_.explorer.goals.recovery_time_s;
-  follower_.clear();
-  ROS_INFO("roomscout_sim_node: robot blocked for %.1f s; backing off for %.1f s",
-           config_.episode.stuck_timeout_s, config_.explorer.goals.recovery_time_s);
-}
-
-void SimNode::endGoal(GoalEnd end, const std::string& text, bool log) {
-  const move_base_msgs::MoveBaseResult result;
-  switch (end) {
-    case GoalEnd::kSucceeded:
-      goal_->handle.setSucceeded(result, text);
-      ++goals_succeeded_;
-      ROS_DEBUG("roomscout_sim_node: goal reached at %.1f s", t_);
-      break;
-    case GoalEnd::kAborted:
-      goal_->handle.setAborted(result, text);
-      ++goals_aborted_;
-      if (log)
-        ROS_INFO("roomscout_sim_node: goal (%.2f, %.2f) aborted: %s", goal_->target_m.x(),
-                 goal_->target_m.y(), text.c_str());
-      break;
-    case GoalEnd::kCanceled:
-      goal_->handle.setCanceled(result, text);
-      ++goals_canceled_;
-      break;
-  }
-  goal_.reset();
-  follower_.clear();
-  velocity_ = {};
-  blocked_for_s_ = 0.0;
-  publishStatus();  // the goal counts, without waiting for the next sample (time may be held)
-  beginHold();
-}
-
 void SimNode::beginHold() {
-  if (params_.goal_wait_s > 0.0 && !timed_out_) hold_since_ = ros::WallTime::now();
+  if (params_.goal_wait_s > 0.0 && !sim_.timedOut()) hold_since_ = ros::WallTime::now();
 }
 
 void SimNode::endHold() {
@@ -908,13 +637,13 @@ bool SimNode::holding() {
 
 void SimNode::resetPacing() {
   pace_wall_ = ros::WallTime::now();
-  pace_t_ = t_;
+  pace_t_ = now_s();
 }
 
 void SimNode::pace() {
   if (params_.real_time_factor <= 0.0) return;
   const ros::WallTime due =
-      pace_wall_ + ros::WallDuration((t_ - pace_t_) / params_.real_time_factor);
+      pace_wall_ + ros::WallDuration((now_s() - pace_t_) / params_.real_time_factor);
   ros::WallTime now = ros::WallTime::now();
   if ((now - due).toSec() > kMaxPacingLag_s) {
     resetPacing();

@@ -1,6 +1,6 @@
 // Per-cell state laid onto a grown or moved grid by map position.
 
-#include "roomscout/core/detail/grid_remap.hpp"
+#include "roomscout/core/grid_remap.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // Marks that a new search clears all at once, without touching every cell.
 
-#include "roomscout/core/detail/visit_marks.hpp"
+#include "roomscout/core/visit_marks.hpp"
 
 #include <gtest/gtest.h>
 

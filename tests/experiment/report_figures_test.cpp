@@ -30,7 +30,7 @@
 #include "roomscout/experiment/report_markdown.hpp"
 #include "roomscout/experiment/report_writer.hpp"
 #include "roomscout/io/atomic_file.hpp"
-#include "roomscout/plots/detail/svg_ids.hpp"
+#include "roomscout/plots/svg_ids.hpp"
 
 namespace roomscout::experiment {
 namespace {

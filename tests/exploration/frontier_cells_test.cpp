@@ -1,4 +1,4 @@
-#include "roomscout/exploration/detail/frontier_cells.hpp"
+#include "roomscout/exploration/frontier_cells.hpp"
 
 #include "roomscout/core/errors.hpp"
 

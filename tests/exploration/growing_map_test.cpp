@@ -12,7 +12,7 @@
 #include <set>
 
 #include "../maps/synthetic_maps.hpp"
-#include "roomscout/core/detail/grid_remap.hpp"
+#include "roomscout/core/grid_remap.hpp"
 #include "roomscout/exploration/detail/improved_rrt.hpp"
 #include "roomscout/exploration/detail/rrt_exploration.hpp"
 #include "roomscout/exploration/detail/rrt_tree.hpp"

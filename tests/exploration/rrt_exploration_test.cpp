@@ -7,9 +7,9 @@
 #include <memory>
 
 #include "roomscout/core/errors.hpp"
-#include "roomscout/exploration/detail/frontier_cells.hpp"
 #include "roomscout/exploration/detail/improved_rrt.hpp"
 #include "roomscout/exploration/detail/rrt_exploration.hpp"
+#include "roomscout/exploration/frontier_cells.hpp"
 
 namespace roomscout {
 namespace {

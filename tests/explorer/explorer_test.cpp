@@ -219,6 +219,45 @@ TEST(Explorer, AGoalWithoutProgressFails) {
   EXPECT_GE(explorer.stats().goal_failures, 1);
 }
 
+/// Always the same goal.
+class FixedGoal final : public ExplorationStrategy {
+ public:
+  explicit FixedGoal(const Vec2& goal_m) : goal_m_(goal_m) {}
+  std::string_view name() const override { return "fixed_goal"; }
+  Decision decide(const ExplorationInput& /*input*/) override { return Decision::goal(goal_m_); }
+
+ private:
+  Vec2 goal_m_;
+};
+
+TEST(Explorer, ProgressIsMeasuredAlongTheDriversPathWhenItReportsOne) {
+  // The driver takes a detour: 1.5 m away from the goal first. Along the Explorer's own path
+  // the robot loses ground and the goal fails; along the driver's it makes progress.
+  ToyRobot robot;
+  robot.pose = Pose2{6.0, 2.0, 0.0};
+  const OccupancyGrid map = robot.sense();
+  const Vec2 start = robot.pose.position(), goal(9.0, 2.0), away(4.5, 2.0);
+  Path detour;
+  for (double s = 0.0; s <= 1.5 + 1e-9; s += 0.05)
+    detour.waypoints_m.push_back(start + Vec2(-s, 0));
+  for (double s = 0.05; s <= 4.5 + 1e-9; s += 0.05) detour.waypoints_m.push_back(away + Vec2(s, 0));
+  ExplorerOptions options;
+  options.goals.no_progress_timeout_s = 5.0;
+  auto failures = [&](bool report_driver_path) {
+    FixedGoal strategy(goal);
+    Explorer explorer(strategy, options);
+    for (double t = 0.0; t <= 7.5; t += 0.25) {
+      const Vec2 p = start + Vec2(-0.2 * t, 0.0);
+      ExplorerInput in(map, Pose2{p.x(), p.y(), M_PI}, t, CellRect{});
+      if (report_driver_path) in.driver_path = &detour;
+      EXPECT_EQ(explorer.update(in).kind, ExplorerCommand::Kind::kDrive) << t;
+    }
+    return explorer.stats().goal_failures;
+  };
+  EXPECT_GE(failures(false), 1);
+  EXPECT_EQ(failures(true), 0);
+}
+
 TEST(Explorer, RejectsBadInputNamingTheValue) {
   ToyRobot robot;
   const OccupancyGrid map = robot.sense();
@@ -259,8 +298,7 @@ TEST(Explorer, OptionsComeFromTheConfigGroupsAndAreChecked) {
   ExplorerOptions options;
   std::vector<std::string> names;
   for (const ParameterGroup& g : options.groups()) names.push_back(g.name);
-  for (const char* group :
-       {"costmap", "planner", "episode", "follower", "laser", "maps", "segmentation", "topology"}) {
+  for (const char* group : {"costmap", "planner", "explorer", "maps", "segmentation", "topology"}) {
     EXPECT_NE(std::find(names.begin(), names.end(), group), names.end()) << group;
   }
   options.goals.no_progress_timeout_s = 0.0;

@@ -168,28 +168,46 @@ TEST(ApplyConfigFile, SyntaxErrorsAndMissingFilesAreInputErrors) {
                        list.string() + ": expected a map of option groups (laser)"));
 }
 
-TEST(ApplyConfigFile, LoadsTheExplorersOptionsFromTheSameGroups) {
+TEST(ApplyConfigFile, LoadsTheExplorersOptionsFromItsOwnGroups) {
   const TempDir dir;
   ExplorerOptions options;
   std::vector<ParameterGroup> groups = options.groups();
-  const auto file =
-      dir.write("robot.yaml",
-                "costmap:\n  inflation_margin_m: 0.08\nplanner:\n  allow_unknown: false\n"
-                "episode:\n  no_progress_timeout_s: 30\nfollower:\n  goal_tolerance_m: 0.3\n"
-                "laser:\n  range_max_m: 8\nmaps:\n  period_s: 2\nsegmentation:\n  "
-                "door_cut_max_width_m: 1.2\n");
-  applyConfigFile(file, groups);
+  const auto file = dir.write(
+      "robot.yaml",
+      "costmap:\n  robot_radius_m: 0.2\n  inflation_margin_m: 0.08\nplanner:\n  allow_unknown: "
+      "false\nexplorer:\n  no_progress_timeout_s: 30\n  arrival_tolerance_m: 0.3\n  "
+      "sensor_range_m: 8\nmaps:\n  period_s: 2\nsegmentation:\n  door_cut_max_width_m: 1.2\n");
+  EXPECT_TRUE(applyConfigFile(file, groups).empty());
+  EXPECT_DOUBLE_EQ(options.costmap.robot_radius_m, 0.2);
   EXPECT_DOUBLE_EQ(options.costmap.inflation_margin_m, 0.08);
   EXPECT_FALSE(options.planner.allow_unknown);
   EXPECT_DOUBLE_EQ(options.goals.no_progress_timeout_s, 30.0);
-  EXPECT_DOUBLE_EQ(options.goals.goal_tolerance_m, 0.3);
-  EXPECT_DOUBLE_EQ(options.goals.laser_range_m, 8.0);
+  EXPECT_DOUBLE_EQ(options.goals.arrival_tolerance_m, 0.3);
+  EXPECT_DOUBLE_EQ(options.goals.sensor_range_m, 8.0);
   EXPECT_DOUBLE_EQ(options.maps.period_s, 2.0);
   EXPECT_DOUBLE_EQ(options.maps.segmentation.door_cut_max_width_m, 1.2);
   EXPECT_NO_THROW(options.validate());
-  const auto bad = dir.write("bad.yaml", "episode:\n  stall_min_new_area_m2: -1\n");
+  const auto bad = dir.write("bad.yaml", "explorer:\n  stall_min_new_area_m2: -1\n");
   applyConfigFile(bad, groups);
   EXPECT_THROW(options.validate(), OptionError);
+}
+
+TEST(ApplyConfigFile, ReadsARenamedOptionUnderItsNewNameWithAWarning) {
+  const TempDir dir;
+  ExplorerOptions options;
+  std::vector<ParameterGroup> groups = options.groups();
+  const auto file = dir.write("old.yaml", "episode:\n  no_progress_timeout_s: 30\n");
+  const std::vector<std::string> warnings =
+      applyConfigFile(file, groups, ExplorerOptions::renamedOptions());
+  EXPECT_DOUBLE_EQ(options.goals.no_progress_timeout_s, 30.0);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_TRUE(Contains(warnings[0],
+                       "episode.no_progress_timeout_s is now "
+                       "explorer.no_progress_timeout_s"));
+  const auto both =
+      dir.write("both.yaml",
+                "episode:\n  no_progress_timeout_s: 30\nexplorer:\n  no_progress_timeout_s: 20\n");
+  EXPECT_THROW(applyConfigFile(both, groups, ExplorerOptions::renamedOptions()), OptionError);
 }
 
 }  // namespace

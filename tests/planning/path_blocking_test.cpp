@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-#include "roomscout/planning/detail/path_blocking.hpp"
+#include "roomscout/planning/path_blocking.hpp"
 
 namespace roomscout {
 namespace {

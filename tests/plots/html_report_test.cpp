@@ -10,7 +10,7 @@
 #include "plot_test_support.hpp"
 #include "roomscout/core/errors.hpp"
 #include "roomscout/io/atomic_file.hpp"
-#include "roomscout/plots/detail/svg_ids.hpp"
+#include "roomscout/plots/svg_ids.hpp"
 #include "roomscout/plots/text_encoding.hpp"
 
 namespace roomscout::plots {

@@ -1,4 +1,4 @@
-#include "roomscout/plots/detail/svg_ids.hpp"
+#include "roomscout/plots/svg_ids.hpp"
 
 #include <gtest/gtest.h>
 

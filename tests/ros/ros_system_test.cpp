@@ -7,8 +7,11 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
+#include <nav_msgs/OccupancyGrid.h>
+#include <sensor_msgs/LaserScan.h>
 #include <std_msgs/String.h>
 #include <std_srvs/Trigger.h>
 #include <visualization_msgs/MarkerArray.h>
@@ -63,15 +66,19 @@ sim::EpisodeResult inProcess(const std::string& method, std::uint64_t seed,
 
 TEST(RosSystem, SemanticExploresSmallHouseOverRosAsInProcess) {
   RosMaster master;
-  // The options of both runs: the growing map the sim node publishes, and the simulator's
-  // stall threshold (0.1 % of the reachable floor), which the explore node cannot know.
+  // The simulator's options (a map grown as SLAM grows it), and the robot's: the Explorer
+  // configured as the simulator configures its own, stall threshold included.
   const std::filesystem::path options = master.dir() / "options.yaml";
+  const std::filesystem::path robot_options = master.dir() / "robot.yaml";
   {
+    std::FILE* f = std::fopen(options.c_str(), "w");
+    std::fprintf(f, "episode:\n  map_mode: growing\n");
+    std::fclose(f);
     sim::EpisodeConfig config;
     const sim::WorldModel model(sim::loadWorld("small_house", std::nullopt), config.world);
     const double stall = sim::explorerOptionsFor(model, config).goals.stall_min_new_area_m2;
-    std::FILE* f = std::fopen(options.c_str(), "w");
-    std::fprintf(f, "episode:\n  map_mode: growing\n  stall_min_new_area_m2: %.17g\n", stall);
+    f = std::fopen(robot_options.c_str(), "w");
+    std::fprintf(f, "explorer:\n  stall_min_new_area_m2: %.17g\n", stall);
     std::fclose(f);
   }
   const sim::EpisodeResult reference = inProcess("semantic", 1, options);
@@ -94,7 +101,7 @@ TEST(RosSystem, SemanticExploresSmallHouseOverRosAsInProcess) {
                           "_points:=true", "_config:=" + options.string()});
   auto explore = master.node(exploreNode(), "explore",
                              {"_method:=semantic", "_seed:=1", "_save_dir:=" + maps.string(),
-                              "_config:=" + options.string()});
+                              "_config:=" + robot_options.string()});
   const bool done = spinUntil([&] { return explore_status.is("done", true); }, seconds(400),
                               [&] { return !sim->poll() && !explore->poll(); });
   const double wall_s =
@@ -186,6 +193,36 @@ TEST(RosSystem, StoppingTheExplorerCancelsItsGoal) {
   EXPECT_EQ(explore->stop(), 0) << explore->output();
   EXPECT_TRUE(spinUntil([&] { return field("goals_canceled") > canceled; }, seconds(10)))
       << sim->output();
+}
+
+TEST(RosSystem, SimNodeHonoursTheConfigsNoiseAndMapMode) {
+  RosMaster master;
+  master.initClient("ros_config_test");
+  ros::NodeHandle nh;
+  const std::filesystem::path options = master.dir() / "options.yaml";
+  std::FILE* f = std::fopen(options.c_str(), "w");
+  std::fputs("noise:\n  profile: harsh\nepisode:\n  map_mode: growing\n", f);
+  std::fclose(f);
+  std::vector<std::vector<float>> scans;
+  std::optional<nav_msgs::OccupancyGrid::ConstPtr> map;
+  ros::Subscriber scan_sub = nh.subscribe<sensor_msgs::LaserScan>(
+      "/scan", 10, [&](const sensor_msgs::LaserScan::ConstPtr& m) { scans.push_back(m->ranges); });
+  ros::Subscriber map_sub = nh.subscribe<nav_msgs::OccupancyGrid>(
+      "/map", 1, [&](const nav_msgs::OccupancyGrid::ConstPtr& m) { map = m; });
+  // No explorer: the robot stands still while the clock runs.
+  auto sim = master.node(simNode(), "sim",
+                         {"_world:=small_house", "_goal_wait_s:=0", "_real_time_factor:=5",
+                          "_config:=" + options.string()});
+  ASSERT_TRUE(spinUntil([&] { return scans.size() >= 3 && map; }, seconds(60),
+                        [&] { return !sim->poll(); }))
+      << sim->output();
+  // Range noise: a robot standing still sees a little differently each time.
+  EXPECT_NE(scans[1], scans[2]);
+  // A growing map: the known area and its margin, far less than the 188 m^2 house's extent.
+  const nav_msgs::MapMetaData& info = (*map)->info;
+  EXPECT_LT(info.width * info.height * info.resolution * info.resolution, 150.0)
+      << info.width << " x " << info.height;
+  EXPECT_EQ(sim->stop(), 0) << sim->output();
 }
 
 /// Runs a node that must refuse to start; returns its output after checking it exited with 1.

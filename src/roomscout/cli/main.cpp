@@ -100,6 +100,7 @@ int runExplore(const ExploreArgs& args) {
   }
 
   experiment::EpisodeSetup setup = experiment::makeEpisodeSetup(args.method, args.seed, settings);
+  for (const std::string& w : setup.warnings) std::cerr << "roomscout: warning: " << w << "\n";
   const sim::WorldModel model(world, setup.config.world);
   experiment::RecordedEpisode recorded;
   {

@@ -24,4 +24,12 @@ struct ParameterGroup {
   std::vector<ParameterRef> parameters;
 };
 
+/// An option's former name, accepted for one release with a warning: "group.name" each. An
+/// empty new_name: the old option is no longer read, and is ignored with the warning `note`.
+struct RenamedOption {
+  std::string old_name;
+  std::string new_name;
+  std::string note;
+};
+
 }  // namespace roomscout

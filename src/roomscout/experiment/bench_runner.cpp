@@ -4,6 +4,7 @@
 #include <chrono>
 #include <condition_variable>
 #include <exception>
+#include <iostream>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -108,7 +109,11 @@ BenchSummary runBench(const BenchOptions& options,
   options.settings.validate();
   const std::vector<BenchWorld> worlds = expandWorlds(options.worlds);
   // Every method and the config file are checked before anything runs.
-  for (const std::string& m : options.methods) (void)makeEpisodeSetup(m, 1, options.settings);
+  for (const std::string& m : options.methods) {
+    const EpisodeSetup setup = makeEpisodeSetup(m, 1, options.settings);
+    if (m != options.methods.front()) continue;
+    for (const std::string& w : setup.warnings) std::cerr << "roomscout: warning: " << w << "\n";
+  }
   std::vector<std::string> names;
   for (const BenchWorld& w : worlds) names.push_back(w.name);
   const std::vector<EpisodeKey> plan =

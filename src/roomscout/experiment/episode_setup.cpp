@@ -46,7 +46,10 @@ EpisodeSetup makeEpisodeSetup(std::string_view method, std::uint64_t seed,
   setup.strategy = createStrategy(method, seed);
   std::vector<std::unique_ptr<ExplorationStrategy>> others;
   std::vector<ParameterGroup> groups = configGroups(setup, others);
-  if (!settings.config_file.empty()) io::applyConfigFile(settings.config_file, groups);
+  if (!settings.config_file.empty()) {
+    setup.warnings =
+        io::applyConfigFile(settings.config_file, groups, sim::EpisodeConfig::renamedOptions());
+  }
   if (settings.max_time_s) setup.config.episode.max_time_s = *settings.max_time_s;
   if (settings.remove_floor) setup.cloud.remove_floor_ceiling = true;
   try {

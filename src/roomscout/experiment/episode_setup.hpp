@@ -41,6 +41,8 @@ struct EpisodeSetup {
   sim::EpisodeConfig config;
   std::unique_ptr<ExplorationStrategy> strategy;
   sim::PointCloudObserverOptions cloud;
+  /// One per option the config file gives under a former name (for the user to see).
+  std::vector<std::string> warnings;
 
   /// Every resolved option as metrics.json's `options`: {group: {name: value}}, the
   /// method's own group included (other methods' groups are not).

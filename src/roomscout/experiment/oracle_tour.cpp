@@ -9,8 +9,8 @@
 #include <queue>
 #include <utility>
 
-#include "roomscout/core/detail/grid_ray.hpp"
 #include "roomscout/core/errors.hpp"
+#include "roomscout/core/grid_ray.hpp"
 #include "roomscout/core/occupancy_grid.hpp"
 #include "roomscout/planning/costmap.hpp"
 #include "roomscout/sim/episode.hpp"
@@ -73,12 +73,11 @@ std::vector<ParameterRef> OracleTourOptions::parameters() {
 }
 
 OracleTourOptions oracleTourOptionsFor(const EpisodeConfig& config) {
-  EpisodeConfig resolved = config;
-  resolved.resolve();
+  const ExplorerOptions explorer = sim::explorerOptionsFor(config, 0.0);
   OracleTourOptions options;
-  options.map_resolution_m = resolved.mapping.resolution_m;
-  options.lethal_radius_m = resolved.explorer.costmap.lethalRadius_m();
-  options.sensor_range_m = resolved.laser.range_max_m;
+  options.map_resolution_m = config.mapping.resolution_m;
+  options.lethal_radius_m = explorer.costmap.lethalRadius_m();
+  options.sensor_range_m = explorer.goals.sensor_range_m;
   return options;
 }
 

@@ -7,7 +7,7 @@
 #include <limits>
 
 #include "roomscout/core/errors.hpp"
-#include "roomscout/exploration/detail/frontier_cells.hpp"
+#include "roomscout/exploration/frontier_cells.hpp"
 
 namespace roomscout {
 

@@ -6,7 +6,7 @@
 #include <optional>
 
 #include "roomscout/core/errors.hpp"
-#include "roomscout/exploration/detail/frontier_cells.hpp"
+#include "roomscout/exploration/frontier_cells.hpp"
 
 namespace roomscout {
 

@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
-#include "roomscout/core/detail/grid_remap.hpp"
 #include "roomscout/core/errors.hpp"
+#include "roomscout/core/grid_remap.hpp"
 #include "roomscout/core/random.hpp"
-#include "roomscout/exploration/detail/frontier_cells.hpp"
+#include "roomscout/exploration/frontier_cells.hpp"
 
 namespace roomscout {
 

@@ -3,9 +3,9 @@
 #include <cmath>
 #include <limits>
 
-#include "roomscout/core/detail/grid_remap.hpp"
 #include "roomscout/core/errors.hpp"
-#include "roomscout/exploration/detail/frontier_cells.hpp"
+#include "roomscout/core/grid_remap.hpp"
+#include "roomscout/exploration/frontier_cells.hpp"
 
 namespace roomscout {
 

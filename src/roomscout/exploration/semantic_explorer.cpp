@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "roomscout/core/errors.hpp"
-#include "roomscout/exploration/detail/frontier_cells.hpp"
+#include "roomscout/exploration/frontier_cells.hpp"
 
 namespace roomscout {
 

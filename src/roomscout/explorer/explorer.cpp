@@ -6,7 +6,7 @@
 #include <string>
 
 #include "roomscout/core/errors.hpp"
-#include "roomscout/planning/detail/path_blocking.hpp"
+#include "roomscout/planning/path_blocking.hpp"
 
 namespace roomscout {
 
@@ -35,31 +35,40 @@ std::size_t freeCells(const OccupancyGrid& grid) {
 }  // namespace
 
 void GoalWatchdogOptions::validate() const {
-  if (!(std::isfinite(goal_tolerance_m) && goal_tolerance_m > 0.0)) {
-    throw OptionError("follower.goal_tolerance_m must be a finite number > 0");
+  if (!(std::isfinite(sensor_range_m) && sensor_range_m > 0.0)) {
+    throw OptionError("explorer.sensor_range_m must be a finite number > 0");
   }
-  if (!(std::isfinite(lookahead_m) && lookahead_m > 0.0)) {
-    throw OptionError("follower.lookahead_m must be a finite number > 0");
+  if (!(std::isfinite(arrival_tolerance_m) && arrival_tolerance_m > 0.0)) {
+    throw OptionError("explorer.arrival_tolerance_m must be a finite number > 0");
+  }
+  if (!(std::isfinite(progress_lookahead_m) && progress_lookahead_m > 0.0)) {
+    throw OptionError("explorer.progress_lookahead_m must be a finite number > 0");
   }
   if (!(std::isfinite(no_progress_timeout_s) && no_progress_timeout_s > 0.0) ||
       !finiteNonNegative(recovery_time_s)) {
-    throw OptionError("episode: no_progress_timeout_s must be > 0 and recovery_time_s >= 0");
+    throw OptionError("explorer: no_progress_timeout_s must be > 0 and recovery_time_s >= 0");
   }
   if (!(std::isfinite(stall_timeout_s) && stall_timeout_s > 0.0) ||
       !finiteNonNegative(stall_radius_m)) {
-    throw OptionError("episode: stall_timeout_s must be > 0 and stall_radius_m >= 0");
+    throw OptionError("explorer: stall_timeout_s must be > 0 and stall_radius_m >= 0");
   }
   if (!finiteNonNegative(stall_min_new_area_m2)) {
-    throw OptionError("episode.stall_min_new_area_m2 must be a finite number >= 0");
+    throw OptionError("explorer.stall_min_new_area_m2 must be a finite number >= 0");
   }
-  if (!(std::isfinite(laser_range_m) && laser_range_m > 0.0)) {
-    throw OptionError("laser.range_max_m must be a finite number > 0");
-  }
-  if (max_decisions_per_step < 1) throw OptionError("episode.max_decisions_per_step must be >= 1");
+  if (max_decisions_per_step < 1) throw OptionError("explorer.max_decisions_per_step must be >= 1");
 }
 
 std::vector<ParameterRef> GoalWatchdogOptions::parameters() {
   return {
+      {"sensor_range_m", &sensor_range_m,
+       "range of the robot's laser scanner: a new scan can only block the path this close to "
+       "the robot [m]"},
+      {"arrival_tolerance_m", &arrival_tolerance_m,
+       "distance to the path's end at which the goal counts as reached (the driver's goal "
+       "tolerance) [m]"},
+      {"progress_lookahead_m", &progress_lookahead_m,
+       "progress along the path is sought within two of these past the robot's last progress "
+       "(the driver's look-ahead) [m]"},
       {"no_progress_timeout_s", &no_progress_timeout_s,
        "the path to the goal not shrinking by 5 cm this long fails the goal [s]"},
       {"recovery_time_s", &recovery_time_s, "how long the robot backs off when blocked [s]"},
@@ -70,26 +79,10 @@ std::vector<ParameterRef> GoalWatchdogOptions::parameters() {
        "[m]"},
       {"stall_min_new_area_m2", &stall_min_new_area_m2,
        "growth of the known free area in a stall window under which the robot counts as stalled "
-       "[m^2]; 0 = never, but the simulator makes 0 0.1 % of the reachable floor"},
+       "[m^2]; 0 = never"},
       {"max_decisions_per_step", &max_decisions_per_step,
        "failed goals tried in a row before waiting a second for new data"},
   };
-}
-
-std::vector<ParameterRef> GoalWatchdogOptions::followerParameters() {
-  return {
-      {"goal_tolerance_m", &goal_tolerance_m,
-       "distance to the path's last waypoint that counts as reached [m]"},
-      {"lookahead_m", &lookahead_m,
-       "distance from the robot to the pure-pursuit carrot on the path ahead; the watchdog seeks "
-       "the robot's projection on the path within two of them past its progress [m]"},
-  };
-}
-
-std::vector<ParameterRef> GoalWatchdogOptions::laserParameters() {
-  return {{"range_max_m", &laser_range_m,
-           "maximum range of the laser scanner: a new scan can only block the path this close to "
-           "the robot [m]"}};
 }
 
 void ExplorerOptions::validate() const {
@@ -103,13 +96,20 @@ std::vector<ParameterGroup> ExplorerOptions::groups() {
   return {
       {"costmap", costmap.parameters()},
       {"planner", planner.parameters()},
-      {"follower", goals.followerParameters()},
-      {"laser", goals.laserParameters()},
-      {"episode", goals.parameters()},
+      {"explorer", goals.parameters()},
       {"maps", maps.parameters()},
       {"segmentation", maps.segmentation.parameters()},
       {"topology", maps.topology.parameters()},
   };
+}
+
+std::vector<RenamedOption> ExplorerOptions::renamedOptions() {
+  std::vector<RenamedOption> renamed;
+  for (const char* name : {"no_progress_timeout_s", "recovery_time_s", "stall_timeout_s",
+                           "stall_radius_m", "stall_min_new_area_m2", "max_decisions_per_step"}) {
+    renamed.push_back({std::string("episode.") + name, std::string("explorer.") + name, ""});
+  }
+  return renamed;
 }
 
 Explorer::Explorer(std::unique_ptr<ExplorationStrategy> strategy, const ExplorerOptions& options)
@@ -122,7 +122,8 @@ Explorer::Explorer(ExplorationStrategy& strategy, const ExplorerOptions& options
       options_(options),
       costmap_((options_.validate(), options_.costmap)),
       planner_(options_.planner),
-      progress_(2.0 * options_.goals.lookahead_m) {
+      progress_(2.0 * options_.goals.progress_lookahead_m),
+      driver_progress_(2.0 * options_.goals.progress_lookahead_m) {
   strategy_->validateOptions();
   const bool reads_rooms = strategy_->readsRooms();
   if (options_.background_maps && options_.all_maps) worker_ = std::make_unique<MapWorker>(true);
@@ -156,6 +157,13 @@ double Explorer::relative(double time_s, const char* what) const {
 void Explorer::failGoal(bool stalled) {
   if (goal_) stalled ? strategy_->onGoalStalled(*goal_) : strategy_->onGoalFailed(*goal_);
   ++stats_.goal_failures;
+  goal_.reset();
+  progress_.reset(Path{});
+  need_decision_ = true;
+}
+
+void Explorer::reachGoal() {
+  if (goal_) strategy_->onGoalReached(*goal_);
   goal_.reset();
   progress_.reset(Path{});
   need_decision_ = true;
@@ -214,7 +222,8 @@ void Explorer::stallWatchdog(const OccupancyGrid& grid, const Vec2& robot, doubl
 
 bool Explorer::pathBlocked(const OccupancyGrid& grid, const Vec2& robot) const {
   // Beyond the laser's range a new scan cannot have blocked the path.
-  const double horizon_m = options_.goals.laser_range_m + options_.costmap.lethalRadius_m() + 0.5;
+  const double horizon_m =
+      blockingHorizon_m(options_.goals.sensor_range_m, options_.costmap.lethalRadius_m());
   return pathBlockedAhead(grid, progress_.path().waypoints_m, progress_.index(), robot, horizon_m,
                           lethal_disc_);
 }
@@ -321,18 +330,21 @@ ExplorerCommand Explorer::update(const ExplorerInput& input) {
     command.reason = need_decision_ ? "no reachable goal yet" : "no goal";
     return command;
   }
-  if ((progress_.path().waypoints_m.back() - robot).norm() <= options_.goals.goal_tolerance_m) {
-    if (goal_) strategy_->onGoalReached(*goal_);
-    goal_.reset();
-    progress_.reset(Path{});
-    need_decision_ = true;
+  if (arrived(progress_.path(), robot, options_.goals.arrival_tolerance_m)) {
+    reachGoal();
     command.reason = "goal reached";
     return command;
   }
   // The no-progress watchdog: measured now, acted on at the next call, after the driver had
   // this cycle's command.
   progress_.update(robot);
-  const double remaining = progress_.remaining_m(robot);
+  double remaining = progress_.remaining_m(robot);
+  if (input.driver_path != nullptr && !input.driver_path->waypoints_m.empty()) {
+    if (driver_progress_.path().waypoints_m != input.driver_path->waypoints_m)
+      driver_progress_.reset(*input.driver_path);
+    driver_progress_.update(robot);
+    remaining = driver_progress_.remaining_m(robot);
+  }
   if (remaining < best_remaining_m_ - kMinProgress_m) {
     best_remaining_m_ = remaining;
     last_progress_s_ = t;
@@ -353,10 +365,7 @@ void Explorer::report(GoalOutcome outcome, double time_s) {
   applyPendingFailure();
   switch (outcome) {
     case GoalOutcome::kReached:
-      if (goal_) strategy_->onGoalReached(*goal_);
-      goal_.reset();
-      progress_.reset(Path{});
-      need_decision_ = true;
+      reachGoal();
       break;
     case GoalOutcome::kFailed:
       failGoal();

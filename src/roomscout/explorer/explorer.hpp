@@ -6,11 +6,12 @@
 // of a goal when whatever drives the robot knows (reached, failed, blocked).
 //
 // Inside: the strategy, the costmap and the A* planner, the rooms and the skeleton graph on
-// their schedule (on a background thread when asked), and the goal watchdogs: a path through
-// newly seen obstacles is replanned, a goal whose path stops shrinking or whose robot dithers
-// without mapping anything new fails, a blocked robot backs off, and every failed goal is
-// reported to the strategy, which keeps its own blacklist. Knows nothing of the simulator,
-// files or the command line; our simulator drives it as a robot's loop would.
+// their schedule (on a background thread when asked), and the goal watchdogs, which judge from
+// what a robot has (its pose over time, the map, the driver's path when reported): a path
+// through newly seen obstacles is replanned, a goal whose path stops shrinking or whose robot
+// dithers without mapping anything new fails, a robot reported blocked backs off, and every
+// failed goal is reported to the strategy, which keeps its own blacklist. Knows nothing of the
+// simulator, files or the command line; our simulator drives it as a robot's loop would.
 
 #include <cstdint>
 #include <limits>
@@ -31,33 +32,29 @@
 
 namespace roomscout {
 
-/// When a goal counts as reached or failed.
-/// Its fields are documented in parameters(), followerParameters() and laserParameters(),
-/// and printed by `roomscout options`.
+/// The Explorer's group "explorer": what it knows of the robot (the sensor's range), when a
+/// goal counts as reached, and the watchdogs that fail a goal the robot makes no progress
+/// towards. Its fields are documented in parameters() and printed by `roomscout options`.
 struct GoalWatchdogOptions {
-  double goal_tolerance_m = 0.15;
-  double lookahead_m = 0.35;
+  double sensor_range_m = 3.5;
+  double arrival_tolerance_m = 0.15;
+  double progress_lookahead_m = 0.35;
   double no_progress_timeout_s = 45.0;
   double recovery_time_s = 1.5;
   double stall_timeout_s = 60.0;
   double stall_radius_m = 4.0;
   double stall_min_new_area_m2 = 1.0;
   int max_decisions_per_step = 8;
-  double laser_range_m = 3.5;
   void validate() const;
-  /// Group "episode" (the watchdogs).
   std::vector<ParameterRef> parameters();
-  /// Group "follower" (goal_tolerance_m, lookahead_m: the driver's own options).
-  std::vector<ParameterRef> followerParameters();
-  /// Group "laser" (range_max_m: the sensor's own option).
-  std::vector<ParameterRef> laserParameters();
 };
 
-/// Every option of an Explorer. The YAML groups are those `roomscout explore --config` reads.
+/// Every option of an Explorer, in the YAML groups its robot's config file sets: "costmap"
+/// (with the robot's radius), "planner", "explorer", "maps", "segmentation", "topology".
 struct ExplorerOptions {
   CostmapOptions costmap;        ///< group "costmap"
   AStarOptions planner;          ///< group "planner"
-  GoalWatchdogOptions goals;     ///< groups "episode", "follower" and "laser"
+  GoalWatchdogOptions goals;     ///< group "explorer"
   AnalysisMapsOptions maps;      ///< groups "maps", "segmentation", "topology"
   bool all_maps = true;          ///< also build the rooms and skeleton graph a strategy does not
                                  ///< read (for display and saving); not in YAML
@@ -65,6 +62,8 @@ struct ExplorerOptions {
                                  ///< thread below the caller's priority; not in YAML
   void validate() const;
   std::vector<ParameterGroup> groups();
+  /// Former names of its options, accepted for one release with a warning.
+  static std::vector<RenamedOption> renamedOptions();
 };
 
 /// One cycle's input.
@@ -79,6 +78,10 @@ struct ExplorerInput {
   /// Cells that may differ from the previous cycle's grid, a hint that saves work (e.g. the
   /// union of the mapper's changed rectangles; empty when nothing changed). None: any may.
   std::optional<CellRect> changed;
+  /// The path the driver follows to the current goal, when it reports one (e.g. move_base's
+  /// global plan), in the grid's frame: the no-progress watchdog measures the robot's progress
+  /// along it. Null or empty: along the path the Explorer planned. Read during the call only.
+  const Path* driver_path = nullptr;
 };
 
 /// What the robot should do now.
@@ -150,6 +153,8 @@ class Explorer {
  private:
   /// Reports the goal failed (or, from the stall watchdog, stalled) and drops it.
   void failGoal(bool stalled = false);
+  /// Reports the goal reached and drops it.
+  void reachGoal();
   void applyPendingFailure();
   bool planTo(const Vec2& robot, const Vec2& target, double t);
   void refreshCostmap(const OccupancyGrid& grid);
@@ -162,7 +167,8 @@ class Explorer {
   ExplorerOptions options_;
   Costmap costmap_;
   AStarPlanner planner_;
-  PathProgress progress_;  ///< the current goal's path and how far the robot came along it
+  PathProgress progress_;         ///< the current goal's path and how far the robot came along it
+  PathProgress driver_progress_;  ///< the same along the driver's path, when it reports one
   std::uint64_t path_version_ = 0, sent_path_version_ = 0;  ///< paths planned / sent so far
   std::unique_ptr<MapWorker> worker_;                       ///< before the maps, whose jobs it runs
   std::unique_ptr<AnalysisMap> rooms_, skeleton_;

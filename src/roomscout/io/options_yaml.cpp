@@ -8,7 +8,7 @@
 #include "roomscout/core/errors.hpp"
 #include "roomscout/core/format.hpp"
 #include "roomscout/io/atomic_file.hpp"
-#include "roomscout/io/detail/yaml_support.hpp"
+#include "roomscout/io/yaml_support.hpp"
 
 namespace roomscout::io {
 namespace {
@@ -42,6 +42,50 @@ PendingValue convert(const ParameterRef& param, const YAML::Node& value, const s
         }
       },
       param.value);
+}
+
+/// "group.name" split at its first dot; a name without a dot is a whole group.
+std::pair<std::string, std::string> splitOptionName(const std::string& name) {
+  const std::size_t dot = name.find('.');
+  if (dot == std::string::npos) return {name, ""};
+  return {name.substr(0, dot), name.substr(dot + 1)};
+}
+
+/// A copy of `root` with every option of `renamed` moved to its new name or dropped, and
+/// groups left empty by that dropped.
+YAML::Node moveRenamedOptions(const YAML::Node& root, const std::vector<RenamedOption>& renamed,
+                              const std::string& source, std::vector<std::string>& warnings) {
+  YAML::Node out = YAML::Clone(root);
+  for (const RenamedOption& r : renamed) {
+    const auto [group, key] = splitOptionName(r.old_name);
+    const YAML::Node& lookup_old = out;
+    if (!lookup_old[group].IsDefined()) continue;
+    if (!key.empty() && !(lookup_old[group].IsMap() && lookup_old[group][key].IsDefined()))
+      continue;
+    YAML::Node old_group = out[group];
+    std::string warning = source + ": " + r.old_name;
+    if (r.new_name.empty()) {
+      warning += " is ignored: " + r.note;
+    } else {
+      const auto [new_group, new_key] = splitOptionName(r.new_name);
+      const YAML::Node& lookup = out;
+      if (lookup[new_group].IsDefined() && lookup[new_group].IsMap() &&
+          lookup[new_group][new_key].IsDefined()) {
+        throw OptionError(source + ": " + r.old_name + " and " + r.new_name +
+                          " are the same option: give only " + r.new_name);
+      }
+      out[new_group][new_key] = YAML::Clone(old_group[key]);
+      warning += " is now " + r.new_name + "; the old name will be removed in the next release";
+    }
+    if (key.empty()) {
+      out.remove(group);
+    } else {
+      old_group.remove(key);
+      if (old_group.size() == 0) out.remove(group);
+    }
+    warnings.push_back(warning);
+  }
+  return out;
 }
 
 }  // namespace
@@ -140,16 +184,20 @@ std::string parameterValueYaml(const ParameterRef& param) {
       param.value);
 }
 
-void applyConfigFile(const std::filesystem::path& path, std::vector<ParameterGroup>& groups) {
+std::vector<std::string> applyConfigFile(const std::filesystem::path& path,
+                                         std::vector<ParameterGroup>& groups,
+                                         const std::vector<RenamedOption>& renamed) {
   const std::string source = path.string();
-  const YAML::Node root = parseYaml(readFile(path), source);
-  if (!root.IsDefined() || root.IsNull()) return;
+  YAML::Node root = parseYaml(readFile(path), source);
+  std::vector<std::string> warnings;
+  if (!root.IsDefined() || root.IsNull()) return warnings;
   std::vector<std::string> names;
   for (const ParameterGroup& g : groups) names.push_back(g.name);
   if (!root.IsMap()) {
     throw InputError(source, "expected a map of option groups (" + joinNames(names) + "), got " +
                                  describeYamlNode(root));
   }
+  root = moveRenamedOptions(root, renamed, source, warnings);
   std::set<std::string> seen;
   for (const auto& entry : root) {
     const std::string key = entry.first.IsScalar() ? entry.first.Scalar() : "?";
@@ -163,6 +211,7 @@ void applyConfigFile(const std::filesystem::path& path, std::vector<ParameterGro
     if (!seen.insert(key).second) throw OptionError(source + ": group '" + key + "' given twice");
     applyParameters(entry.second, group->parameters, source + ": " + group->name);
   }
+  return warnings;
 }
 
 }  // namespace roomscout::io

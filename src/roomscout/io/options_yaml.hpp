@@ -34,7 +34,11 @@ std::string parameterValueYaml(const ParameterRef& param);
 /// group's options. YAML syntax errors throw InputError(path, "line N: ..."); a top level that
 /// is not a map throws InputError; an unknown group throws OptionError listing the groups;
 /// option errors are prefixed with the path ("cfg.yaml: laser.num_beams: ...").
-/// An empty file changes nothing.
-void applyConfigFile(const std::filesystem::path& path, std::vector<ParameterGroup>& groups);
+/// An empty file changes nothing. An option under a name of `renamed` is read under its new
+/// name (or, with none, ignored); given under both names it throws OptionError. Returns one
+/// warning per renamed option the file uses, naming the file, the old and the new name.
+std::vector<std::string> applyConfigFile(const std::filesystem::path& path,
+                                         std::vector<ParameterGroup>& groups,
+                                         const std::vector<RenamedOption>& renamed = {});
 
 }  // namespace roomscout::io

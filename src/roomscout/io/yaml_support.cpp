@@ -1,4 +1,4 @@
-#include "roomscout/io/detail/yaml_support.hpp"
+#include "roomscout/io/yaml_support.hpp"
 
 #include <charconv>
 #include <cmath>

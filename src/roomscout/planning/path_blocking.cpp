@@ -1,4 +1,4 @@
-#include "roomscout/planning/detail/path_blocking.hpp"
+#include "roomscout/planning/path_blocking.hpp"
 
 #include <cmath>
 

@@ -66,8 +66,7 @@ void PathFollower::setPath(const Path& path) { progress_.reset(path); }
 void PathFollower::clear() { setPath(Path{}); }
 
 bool PathFollower::reached(const Pose2& robot) const {
-  if (!hasPath()) return false;
-  return (path().waypoints_m.back() - robot.position()).norm() <= options_.goal_tolerance_m;
+  return arrived(path(), robot.position(), options_.goal_tolerance_m);
 }
 
 Vec2 PathFollower::carrot(const Vec2& robot_m) const {

@@ -28,6 +28,9 @@ struct VelocityCommand {
   double angular_radps = 0.0;
 };
 
+/// The slow reverse that backs a blocked robot away from whatever it is pressed against.
+inline VelocityCommand backOffCommand() { return VelocityCommand{-0.1, 0.0}; }
+
 /// Follows one path at a time. Call setPath() for a new path, then compute() every control
 /// step; reached() tells when the robot is within goal_tolerance_m of the path's end.
 class PathFollower {

@@ -8,7 +8,7 @@
 #include "roomscout/core/errors.hpp"
 #include "roomscout/io/atomic_file.hpp"
 #include "roomscout/plots/detail/cairo_canvas.hpp"
-#include "roomscout/plots/detail/svg_ids.hpp"
+#include "roomscout/plots/svg_ids.hpp"
 
 namespace roomscout::plots {
 namespace {

@@ -6,7 +6,7 @@
 
 #include "roomscout/core/errors.hpp"
 #include "roomscout/io/atomic_file.hpp"
-#include "roomscout/plots/detail/svg_ids.hpp"
+#include "roomscout/plots/svg_ids.hpp"
 #include "roomscout/plots/text_encoding.hpp"
 
 namespace roomscout::plots {

@@ -1,7 +1,7 @@
 #include "roomscout/sim/builtin_worlds.hpp"
 
 #include "roomscout/core/errors.hpp"
-#include "roomscout/io/detail/yaml_support.hpp"
+#include "roomscout/io/yaml_support.hpp"
 #include "roomscout/sim/world_file.hpp"
 
 namespace roomscout::sim {

@@ -40,6 +40,7 @@ struct EpisodeOptions {
   double completion_rate = 0.98;
   double stuck_timeout_s = 2.0;
   double room_dwell_s = 2.0;
+  double stall_floor_fraction = 0.001;
   std::string map_mode = "fixed";
   double map_margin_m = 1.0;
   MapMode mapMode() const;
@@ -48,9 +49,8 @@ struct EpisodeOptions {
 };
 
 /// Every option an episode uses, grouped as in a config file. The robot group is
-/// authoritative for the radius and speed limits, which are mirrored into the others; the
-/// follower's goal tolerance and look-ahead and the laser's range are mirrored into the
-/// Explorer's watchdogs.
+/// authoritative for the radius and speed limits, which are mirrored into the world and the
+/// follower; explorerOptionsFor() tells the Explorer about the simulated robot.
 struct EpisodeConfig {
   WorldModelOptions world;
   RobotOptions robot;
@@ -65,21 +65,19 @@ struct EpisodeConfig {
   /// the Explorer, the follower, the occupancy grid and the point cloud's keyframes use MRPT's
   /// estimate of its pose (docs/slam.md).
   roomscout::slam::SlamOptions slam;
-  /// Costmap, planner, watchdogs, rooms and skeleton graph. Its stall threshold is 0 here:
-  /// explorerOptionsFor() makes it 0.1 % of the world's reachable floor unless a config sets it.
-  ExplorerOptions explorer = [] {
-    ExplorerOptions o;
-    o.goals.stall_min_new_area_m2 = 0.0;
-    return o;
-  }();
+  /// Costmap, planner, watchdogs, rooms and skeleton graph. What describes the robot (its
+  /// radius, sensor range, arrival tolerance and look-ahead) and the stall threshold are set
+  /// by explorerOptionsFor() from the groups above.
+  ExplorerOptions explorer;
 
-  /// Copies the robot's radius and limits, and the follower's and laser's options, into the
-  /// groups that mirror them.
+  /// Copies the robot's radius and limits into the world and the follower.
   void resolve();
   /// Throws OptionError when any option is out of range.
   void validate() const;
   /// The editable groups, for configuration files and run records.
   std::vector<ParameterGroup> groups();
+  /// Former names of its options, accepted for one release with a warning.
+  static std::vector<RenamedOption> renamedOptions();
 };
 
 /// Median and 95th percentile of a set of durations [ms].
@@ -157,9 +155,14 @@ GridGeometry publishedGeometry(const GridGeometry& full, const CellRect& known, 
 /// left automatic (-1) is the simulated sensor's.
 slam::SlamOptions slamOptionsFor(slam::SlamOptions options, const NoiseProfile& noise);
 
-/// config.explorer, resolved for `world`: a stall threshold of 0 becomes 0.1 % of the floor the
-/// robot can reach (a stall window is one in which the map gained less than that).
-ExplorerOptions explorerOptionsFor(const WorldModel& world, EpisodeConfig config);
+/// The Explorer's options for the simulated robot: config.explorer with the robot's radius,
+/// the laser's range, the follower's goal tolerance and look-ahead, and a stall threshold of
+/// episode.stall_floor_fraction of `reachable_area_m2`, the floor the robot can reach. The one
+/// place where the simulator describes its robot to the Explorer.
+ExplorerOptions explorerOptionsFor(EpisodeConfig config, double reachable_area_m2);
+
+/// The same for `world`, whose reachable floor is measured here.
+ExplorerOptions explorerOptionsFor(const WorldModel& world, const EpisodeConfig& config);
 
 /// Runs one episode with `explorer`, made with explorerOptionsFor(world, config) and used up
 /// (read its rooms and skeleton graph afterwards). The world model is shared read-only;

@@ -3,8 +3,8 @@
 #include <cmath>
 #include <limits>
 
-#include "roomscout/core/detail/grid_ray.hpp"
 #include "roomscout/core/errors.hpp"
+#include "roomscout/core/grid_ray.hpp"
 
 namespace roomscout::sim {
 

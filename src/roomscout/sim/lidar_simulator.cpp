@@ -8,8 +8,8 @@
 #include <numeric>
 #include <span>
 
-#include "roomscout/core/detail/grid_ray.hpp"
 #include "roomscout/core/errors.hpp"
+#include "roomscout/core/grid_ray.hpp"
 
 namespace roomscout::sim {
 

@@ -11,7 +11,7 @@
 #include "roomscout/core/errors.hpp"
 #include "roomscout/core/format.hpp"
 #include "roomscout/io/atomic_file.hpp"
-#include "roomscout/io/detail/yaml_support.hpp"
+#include "roomscout/io/yaml_support.hpp"
 
 namespace roomscout::sim {
 

@@ -39,7 +39,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "roomscout/core/detail/visit_marks.hpp"
+#include "roomscout/core/visit_marks.hpp"
 #include "roomscout/exploration/exploration_strategy.hpp"
 
 namespace roomscout {

@@ -7,7 +7,7 @@
 #include <utility>
 #include <vector>
 
-#include "roomscout/core/detail/visit_marks.hpp"
+#include "roomscout/core/visit_marks.hpp"
 #include "roomscout/exploration/detail/cell_counts.hpp"
 #include "roomscout/exploration/detail/slivers.hpp"
 #include "roomscout/exploration/exploration_strategy.hpp"

@@ -60,10 +60,10 @@
 #include <random>
 #include <vector>
 
-#include "roomscout/core/detail/grid_remap.hpp"
-#include "roomscout/exploration/detail/frontier_cells.hpp"
+#include "roomscout/core/grid_remap.hpp"
 #include "roomscout/exploration/detail/rrt_tree.hpp"
 #include "roomscout/exploration/exploration_strategy.hpp"
+#include "roomscout/exploration/frontier_cells.hpp"
 
 namespace roomscout {
 

@@ -80,7 +80,7 @@
 #include <string>
 #include <vector>
 
-#include "roomscout/core/detail/grid_remap.hpp"
+#include "roomscout/core/grid_remap.hpp"
 #include "roomscout/exploration/detail/room_biased_tree.hpp"
 #include "roomscout/exploration/detail/room_tracker.hpp"
 #include "roomscout/exploration/detail/semantic_end_phase.hpp"

@@ -15,7 +15,7 @@
 #include <optional>
 #include <vector>
 
-#include "roomscout/core/detail/visit_marks.hpp"
+#include "roomscout/core/visit_marks.hpp"
 #include "roomscout/exploration/detail/cell_counts.hpp"
 #include "roomscout/exploration/detail/room_biased_tree.hpp"
 #include "roomscout/exploration/detail/room_tracker.hpp"

@@ -8,7 +8,7 @@
 #include <string_view>
 
 #include "roomscout/core/occupancy_grid.hpp"
-#include "roomscout/exploration/detail/frontier_cells.hpp"
+#include "roomscout/exploration/frontier_cells.hpp"
 
 namespace roomscout {
 

@@ -84,7 +84,7 @@
 #include <utility>
 #include <vector>
 
-#include "roomscout/core/detail/grid_remap.hpp"
+#include "roomscout/core/grid_remap.hpp"
 #include "roomscout/exploration/exploration_strategy.hpp"
 
 namespace roomscout {

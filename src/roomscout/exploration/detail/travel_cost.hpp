@@ -9,7 +9,7 @@
 #include <utility>
 #include <vector>
 
-#include "roomscout/core/detail/visit_marks.hpp"
+#include "roomscout/core/visit_marks.hpp"
 #include "roomscout/exploration/exploration_strategy.hpp"
 
 namespace roomscout {
