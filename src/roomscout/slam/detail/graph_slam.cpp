@@ -36,6 +36,8 @@ struct GraphSlam::SubmapEntry {
   std::unique_ptr<CorrelativeMatcher> matcher;  ///< built when first searched, once finished
   std::vector<int> nodes;
   int graph_id = 0;
+  double odometry_var_m = 0.0;  ///< summed over its nodes: the odometry chain's variance
+  double odometry_var_rad = 0.0;
 };
 
 GraphSlam::GraphSlam(const GraphSlamOptions& options, const OccupancyGridOptions& cells,
@@ -104,11 +106,14 @@ void GraphSlam::insertNode(const LaserScan& scan, const Pose2& odometry, const P
       e.probability.update(e.submap.grid(), local_changed);
     }
     e.nodes.push_back(id);
-    // A node sits in its submaps as surely as the odometry placed it, at worst as the scan
-    // matcher does: with exact odometry a loop closure cannot shift a submap under its nodes.
+    // A node sits in its submap as surely as the odometry chain since the submap began placed
+    // it, at worst as the scan matcher does: with exact odometry a loop closure cannot shift a
+    // submap under its nodes.
+    e.odometry_var_m += sd_m * sd_m;
+    e.odometry_var_rad += sd_rad * sd_rad;
     graph_.addConstraint({e.graph_id, nodes_[id]->graph_id, local,
-                          std::min(options_.intra_sd_m, sd_m),
-                          std::min(options_.intra_sd_rad, sd_rad), false});
+                          std::min(options_.intra_sd_m, std::sqrt(e.odometry_var_m)),
+                          std::min(options_.intra_sd_rad, std::sqrt(e.odometry_var_rad)), false});
     if (s % 2 == 0 && map_) changed.unite(renderSubmapRect(s, local_changed));
   }
   // The older submap is finished once full.
@@ -143,16 +148,19 @@ CellRect GraphSlam::update(const LaserScan& input, const Pose2& odometry) {
     return changed;
   }
 
-  // Predict from the odometry, then match against the older active submap.
+  // Predict from the odometry, then match against the older active submap. Even a node
+  // reached by turning on the spot carries some position error (wheels slip as they turn):
+  // a floor of 2 % of the per-metre errors, all but nothing for exact odometry.
   const Pose2 prediction = compose(last.global, delta);
-  const double sd_rad = std::hypot(
-      options_.min_sd_rad,
-      std::sqrt(
-          options_.odometry_rotation_sd_per_rad * options_.odometry_rotation_sd_per_rad * turn +
-          options_.odometry_rotation_sd_per_m * options_.odometry_rotation_sd_per_m * distance));
-  const double sd_m =
-      std::hypot(options_.min_sd_m, std::hypot(options_.odometry_sd_per_m * std::sqrt(distance),
-                                               distance * (sd_rad - options_.min_sd_rad)));
+  const double floor_m = options_.min_sd_m + 0.02 * options_.odometry_sd_per_m;
+  const double floor_rad = options_.min_sd_rad + 0.02 * options_.odometry_rotation_sd_per_rad;
+  const double turning_sd_rad = std::sqrt(
+      options_.odometry_rotation_sd_per_rad * options_.odometry_rotation_sd_per_rad * turn +
+      options_.odometry_rotation_sd_per_m * options_.odometry_rotation_sd_per_m * distance);
+  const double sd_rad = std::hypot(floor_rad, turning_sd_rad);
+  const double sd_m = std::hypot(
+      floor_m,
+      std::hypot(options_.odometry_sd_per_m * std::sqrt(distance), distance * turning_sd_rad));
   Pose2 estimate = prediction;
   const SubmapEntry& target = *submaps_[active_.front()];
   if (!points.empty()) {
