@@ -4,8 +4,6 @@
 #include <array>
 #include <chrono>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <limits>
 
 #include "roomscout/slam/detail/pose_ops.hpp"
@@ -172,13 +170,6 @@ CellRect GraphSlam::update(const LaserScan& input, const Pose2& odometry) {
     const double rotation = std::abs(wrapAngle(m.pose.yaw_rad - local_prediction.yaw_rad));
     const bool consistent = shift <= options_.max_innovation_sd * sd_m &&
                             rotation <= options_.max_innovation_sd * sd_rad;
-    if (std::getenv("RS_DEBUG"))
-      std::fprintf(stderr,
-                   "node %zu pred %.4f %.4f %.4f d %.4f %.4f %.4f acc %d deg %d pairs %d cons %d\n",
-                   nodes_.size(), local_prediction.x_m, local_prediction.y_m,
-                   local_prediction.yaw_rad, m.pose.x_m - local_prediction.x_m,
-                   m.pose.y_m - local_prediction.y_m, m.pose.yaw_rad - local_prediction.yaw_rad,
-                   m.accepted, m.degenerate, m.points_on_walls, consistent);
     if (m.accepted && consistent) {
       estimate = compose(target.submap.global_pose, m.pose);
       if (m.degenerate) ++stats_.matches_degenerate;
