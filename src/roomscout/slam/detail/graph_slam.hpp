@@ -1,7 +1,7 @@
 #pragma once
 // The graph SLAM behind slam.mode "graph", built as Cartographer 2D is:
 // - local SLAM: each scan that moved far enough becomes a node, matched against the older of
-//   two overlapping submaps with the odometry's prediction as a prior (ScanMatcher), then
+//   two overlapping submaps with the odometry's prediction as a prior (matchScan()), then
 //   inserted into both;
 // - loop closure: some nodes are searched for, by branch and bound, in finished submaps near
 //   them, the best pose refined and verified before it joins the graph;
