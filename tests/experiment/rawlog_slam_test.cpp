@@ -29,12 +29,6 @@ float rangeToWalls(const Vec2& p, double angle) {
   return static_cast<float>(t);
 }
 
-Pose2 compose(const Pose2& a, const Pose2& b) {
-  const double c = std::cos(a.yaw_rad), s = std::sin(a.yaw_rad);
-  return {a.x_m + c * b.x_m - s * b.y_m, a.y_m + s * b.x_m + c * b.y_m,
-          wrapAngle(a.yaw_rad + b.yaw_rad)};
-}
-
 /// The robot's true poses: along y = 1.5 from x = 1.5 to 6.5, a quarter turn, up to y = 4.5.
 std::vector<Pose2> truePath() {
   std::vector<Pose2> path;
@@ -55,12 +49,8 @@ slam::Rawlog boxLog(double yaw_drift_rad) {
   for (std::size_t k = 0; k < path.size(); ++k) {
     if (k > 0) {
       // The true increment, then the drift on top.
-      const Pose2& a = path[k - 1];
-      const Pose2& b = path[k];
-      const double c = std::cos(a.yaw_rad), s = std::sin(a.yaw_rad);
-      const Pose2 increment{c * (b.x_m - a.x_m) + s * (b.y_m - a.y_m),
-                            -s * (b.x_m - a.x_m) + c * (b.y_m - a.y_m),
-                            wrapAngle(b.yaw_rad - a.yaw_rad) + yaw_drift_rad};
+      Pose2 increment = between(path[k - 1], path[k]);
+      increment.yaw_rad += yaw_drift_rad;
       odometry = compose(odometry, increment);
     }
     slam::RawlogScan scan;

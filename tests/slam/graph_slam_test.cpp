@@ -11,6 +11,7 @@
 #include "roomscout/sim/world_model.hpp"
 #include "roomscout/slam/pose_graph.hpp"
 #include "roomscout/slam/slam.hpp"
+#include "simulated_drive.hpp"
 
 namespace roomscout::slam {
 namespace {
@@ -31,47 +32,12 @@ sim::World ringWorld() {
   return w;
 }
 
-struct Drive {
-  std::vector<Pose2> truth;   ///< per scan
-  std::vector<Pose2> online;  ///< the SLAM's estimate right after each scan
-  std::vector<Pose2> odometry;
-};
+using testing::SimulatedDrive;
 
-/// Drives through `waypoints` (turning on the spot in 0.1 rad steps, then straight in 5 cm
-/// steps), one scan per step, feeding the SLAM.
-Drive drive(Slam& slam, const sim::WorldModel& world, const std::vector<Vec2>& waypoints,
-            const sim::NoiseProfile& noise, std::uint64_t seed) {
-  sim::LaserSimulator laser(world, sim::LaserOptions{}, seed, noise.laser);
-  Pose2 truth = world.start();
-  sim::OdometrySimulator odometry(noise.odometry, truth, seed + 1);
-  Drive d;
-  auto sense = [&] {
-    slam.update(laser.scan(truth), odometry.pose());
-    d.truth.push_back(truth);
-    d.online.push_back(slam.pose(odometry.pose()));
-    d.odometry.push_back(odometry.pose());
-  };
-  sense();
-  for (const Vec2& target : waypoints) {
-    const double heading = std::atan2(target.y() - truth.y_m, target.x() - truth.x_m);
-    while (std::abs(wrapAngle(heading - truth.yaw_rad)) > 1e-9) {
-      const Pose2 before = truth;
-      truth.yaw_rad =
-          wrapAngle(truth.yaw_rad + std::clamp(wrapAngle(heading - truth.yaw_rad), -0.1, 0.1));
-      odometry.step(before, truth);
-      sense();
-    }
-    while ((target - truth.position()).norm() > 1e-9) {
-      const Vec2 delta = target - truth.position();
-      const Vec2 step = delta.norm() > 0.05 ? Vec2(delta.normalized() * 0.05) : delta;
-      const Pose2 before = truth;
-      truth.x_m += step.x();
-      truth.y_m += step.y();
-      odometry.step(before, truth);
-      sense();
-    }
-  }
-  return d;
+/// Drives through `waypoints`, turning in 0.1 rad steps.
+SimulatedDrive drive(Slam& slam, const sim::WorldModel& world, const std::vector<Vec2>& waypoints,
+                     const sim::NoiseProfile& noise, std::uint64_t seed) {
+  return testing::driveThrough(slam, world, waypoints, noise.odometry, noise.laser, seed, 0.1);
 }
 
 double rmse(const std::vector<Pose2>& a, const std::vector<Pose2>& b) {
@@ -108,7 +74,7 @@ TEST(GraphSlam, ExactSensorsGiveTheTruthWithinFiveMillimetresThroughTwoRooms) {
   const sim::WorldModel world(sim::testing::twoRooms());
   const sim::NoiseProfile exact = sim::NoiseProfile::named("none");
   Slam slam(graphOptionsFor(exact), world.start(), 1);
-  const Drive d =
+  const SimulatedDrive d =
       drive(slam, world, {{4.0, 2.5}, {8.0, 2.5}, {10.5, 1.0}, {10.5, 4.0}, {7.0, 2.5}, {2.0, 2.5}},
             exact, 1);
   slam.finish();
@@ -125,7 +91,7 @@ TEST(GraphSlam, ExactSensorsOnAnAssumedNoisyOdometryStayWithinACentimetre) {
   SlamOptions options = graphOptionsFor(sim::NoiseProfile::named("tb3"));
   options.range_sd_fraction = 0.0;
   Slam slam(options, world.start(), 1);
-  const Drive d =
+  const SimulatedDrive d =
       drive(slam, world, {{4.0, 2.5}, {8.0, 2.5}, {10.5, 1.0}, {10.5, 4.0}, {7.0, 2.5}, {2.0, 2.5}},
             sim::NoiseProfile::named("none"), 1);
   EXPECT_LT(maxError(d.truth, d.online), 0.01);
@@ -148,7 +114,7 @@ TEST(GraphSlam, ADegenerateStartDoesNotCorruptThePose) {
   const sim::WorldModel world(w);
   const sim::NoiseProfile exact = sim::NoiseProfile::named("none");
   Slam slam(graphOptionsFor(sim::NoiseProfile::named("tb3")), world.start(), 1);
-  const Drive d = drive(slam, world, {{2.0, 3.0}, {2.0, 1.0}, {3.0, 2.0}}, exact, 1);
+  const SimulatedDrive d = drive(slam, world, {{2.0, 3.0}, {2.0, 1.0}, {3.0, 2.0}}, exact, 1);
   EXPECT_LT(maxError(d.truth, d.online), 0.02);
   for (std::size_t i = 0; i < d.truth.size(); ++i) {
     ASSERT_LT(std::abs(wrapAngle(d.online[i].yaw_rad - d.truth[i].yaw_rad)), 0.02) << "scan " << i;
@@ -165,10 +131,10 @@ TEST(GraphSlam, LoopClosureLowersTheErrorOfAHarshOdometryLoop) {
     SlamOptions without = graphOptionsFor(harsh);
     without.loop_every_n_nodes = 0;
     Slam open(without, world.start(), seed);
-    const Drive a = drive(open, world, loop, harsh, seed);
+    const SimulatedDrive a = drive(open, world, loop, harsh, seed);
     open.finish();
     Slam closed(graphOptionsFor(harsh), world.start(), seed);
-    const Drive b = drive(closed, world, loop, harsh, seed);
+    const SimulatedDrive b = drive(closed, world, loop, harsh, seed);
     closed.finish();
     EXPECT_EQ(open.stats().loop_closures, 0);
     EXPECT_GT(closed.stats().loop_closures, 0) << "seed " << seed;
@@ -251,11 +217,6 @@ PoseGraph squareGraph(PoseGraphOptions options) {
   }
   for (const Pose2& p : truth) g.addPose(p);
   g.fix(0);
-  auto between = [](const Pose2& a, const Pose2& b) {
-    const double c = std::cos(a.yaw_rad), s = std::sin(a.yaw_rad);
-    const double dx = b.x_m - a.x_m, dy = b.y_m - a.y_m;
-    return Pose2{c * dx + s * dy, -s * dx + c * dy, wrapAngle(b.yaw_rad - a.yaw_rad)};
-  };
   for (int i = 0; i + 1 < 16; ++i) g.addConstraint({i, i + 1, between(truth[i], truth[i + 1])});
   g.addConstraint({15, 0, between(truth[15], truth[0]), 0.05, 0.02, true});
   return g;

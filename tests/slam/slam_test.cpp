@@ -9,6 +9,7 @@
 #include "roomscout/sim/laser_simulator.hpp"
 #include "roomscout/sim/sensor_noise.hpp"
 #include "roomscout/sim/world_model.hpp"
+#include "simulated_drive.hpp"
 
 namespace roomscout::slam {
 namespace {
@@ -27,47 +28,20 @@ struct DriveResult {
 DriveResult drive(Slam& slam, const sim::WorldModel& world,
                   const sim::OdometryNoise& odometry_noise, const sim::RangeNoise& range_noise,
                   std::uint64_t seed) {
-  sim::LaserSimulator laser(world, sim::LaserOptions{}, seed, range_noise);
-  Pose2 truth = world.start();
-  sim::OdometrySimulator odometry(odometry_noise, truth, seed + 1);
+  const testing::SimulatedDrive d = testing::driveThrough(
+      slam, world, {{4.0, 2.5}, {8.0, 2.5}, {10.5, 1.0}, {10.5, 4.0}, {7.0, 2.5}, {2.0, 2.5}},
+      odometry_noise, range_noise, seed, 0.2);
   DriveResult r;
-  const std::vector<Vec2> legs = {{4.0, 2.5},  {8.0, 2.5}, {10.5, 1.0},
-                                  {10.5, 4.0}, {7.0, 2.5}, {2.0, 2.5}};
-  auto sense = [&] {
-    slam.update(laser.scan(truth), odometry.pose());
-    const Pose2 estimate = slam.pose(odometry.pose());
+  for (std::size_t i = 0; i < d.truth.size(); ++i) {
     r.max_position_error_m =
-        std::max(r.max_position_error_m, (estimate.position() - truth.position()).norm());
-    r.max_heading_error_rad =
-        std::max(r.max_heading_error_rad, std::abs(wrapAngle(estimate.yaw_rad - truth.yaw_rad)));
+        std::max(r.max_position_error_m, (d.online[i].position() - d.truth[i].position()).norm());
+    r.max_heading_error_rad = std::max(
+        r.max_heading_error_rad, std::abs(wrapAngle(d.online[i].yaw_rad - d.truth[i].yaw_rad)));
     r.max_odometry_error_m =
-        std::max(r.max_odometry_error_m, (odometry.pose().position() - truth.position()).norm());
-    ++r.scans;
-  };
-  sense();
-  bool first_leg = true;
-  for (const Vec2& target : legs) {
-    const double heading = std::atan2(target.y() - truth.y_m, target.x() - truth.x_m);
-    // Turn on the spot in 0.2 rad steps, then drive in 0.05 m steps.
-    while (std::abs(wrapAngle(heading - truth.yaw_rad)) > 1e-9) {
-      const double d = std::clamp(wrapAngle(heading - truth.yaw_rad), -0.2, 0.2);
-      const Pose2 before = truth;
-      truth.yaw_rad = wrapAngle(truth.yaw_rad + d);
-      odometry.step(before, truth);
-      sense();
-    }
-    while ((target - truth.position()).norm() > 1e-9) {
-      const Vec2 delta = target - truth.position();
-      const Vec2 step = delta.norm() > 0.05 ? Vec2(delta.normalized() * 0.05) : delta;
-      const Pose2 before = truth;
-      truth.x_m += step.x();
-      truth.y_m += step.y();
-      odometry.step(before, truth);
-      sense();
-    }
-    if (first_leg) r.max_first_leg_error_m = r.max_position_error_m;
-    first_leg = false;
+        std::max(r.max_odometry_error_m, (d.odometry[i].position() - d.truth[i].position()).norm());
+    if (i + 1 == d.leg_ends.front()) r.max_first_leg_error_m = r.max_position_error_m;
   }
+  r.scans = static_cast<int>(d.truth.size());
   return r;
 }
 

@@ -23,18 +23,6 @@ double secondsSince(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-/// a then b, b expressed in a's frame.
-Pose2 composePoses(const Pose2& a, const Pose2& b) {
-  const double c = std::cos(a.yaw_rad), s = std::sin(a.yaw_rad);
-  return {a.x_m + c * b.x_m - s * b.y_m, a.y_m + s * b.x_m + c * b.y_m,
-          wrapAngle(a.yaw_rad + b.yaw_rad)};
-}
-
-Pose2 invertPose(const Pose2& a) {
-  const double c = std::cos(a.yaw_rad), s = std::sin(a.yaw_rad);
-  return {-c * a.x_m - s * a.y_m, s * a.x_m - c * a.y_m, wrapAngle(-a.yaw_rad)};
-}
-
 bool hasReturn(const LaserScan& scan) {
   return std::any_of(scan.ranges_m.begin(), scan.ranges_m.end(), [&](float r) {
     return std::isfinite(r) && r >= scan.range_min_m && r <= scan.range_max_m;
@@ -134,7 +122,7 @@ RawlogSlamResult runRawlogSlam(const slam::Rawlog& log, const slam::SlamOptions&
   std::vector<Pose2> T_odom_laser(n);
   for (std::size_t i = 0; i < n; ++i) {
     result.T_odom_robot.push_back(log.scans[i].T_odom_robot);
-    T_odom_laser[i] = composePoses(log.scans[i].T_odom_robot, log.scans[i].T_robot_laser);
+    T_odom_laser[i] = compose(log.scans[i].T_odom_robot, log.scans[i].T_robot_laser);
   }
 
   // The SLAM tracks the laser, its map frame that of the first scan's laser. A scan with no
@@ -176,11 +164,9 @@ RawlogSlamResult runRawlogSlam(const slam::Rawlog& log, const slam::SlamOptions&
       // Before the first update the map frame is the odometry's (the SLAM started there).
       const Pose2 T_map_anchor = a == kNone ? T_odom_laser.front() : T_map_laser[a];
       const Pose2 T_odom_anchor = T_odom_laser[a == kNone ? 0 : a];
-      T_map_laser[i] =
-          composePoses(T_map_anchor, composePoses(invertPose(T_odom_anchor), T_odom_laser[i]));
+      T_map_laser[i] = compose(T_map_anchor, compose(inverse(T_odom_anchor), T_odom_laser[i]));
     }
-    result.T_map_robot.push_back(
-        composePoses(T_map_laser[i], invertPose(log.scans[i].T_robot_laser)));
+    result.T_map_robot.push_back(compose(T_map_laser[i], inverse(log.scans[i].T_robot_laser)));
   }
 
   const auto maps_start = Clock::now();

@@ -45,8 +45,7 @@ void PoseGraph::addConstraint(const PoseGraphConstraint& c) {
   if (c.from < 0 || c.from >= n || c.to < 0 || c.to >= n || c.from == c.to) {
     throw InvalidArgument("pose graph: a constraint joins unknown or identical poses");
   }
-  if (!std::isfinite(c.measured.x_m) || !std::isfinite(c.measured.y_m) ||
-      !std::isfinite(c.measured.yaw_rad)) {
+  if (!isFinite(c.measured)) {
     throw InvalidArgument("pose graph: a constraint's measurement is not finite");
   }
   if (!(c.sd_m > 0.0 && c.sd_rad > 0.0 && std::isfinite(c.sd_m) && std::isfinite(c.sd_rad))) {
@@ -86,13 +85,12 @@ bool PoseGraph::optimise() {
   ceres::Solver::Summary summary;
   ceres::Solve(options, &problem, &summary);
   if (!summary.IsSolutionUsable()) return false;
+  std::vector<Pose2> solved(poses_.size());
   for (std::size_t i = 0; i < poses_.size(); ++i) {
-    const Pose2 p{values[3 * i], values[3 * i + 1], wrapAngle(values[3 * i + 2])};
-    if (!std::isfinite(p.x_m) || !std::isfinite(p.y_m) || !std::isfinite(p.yaw_rad)) return false;
+    solved[i] = {values[3 * i], values[3 * i + 1], wrapAngle(values[3 * i + 2])};
+    if (!isFinite(solved[i])) return false;
   }
-  for (std::size_t i = 0; i < poses_.size(); ++i) {
-    poses_[i] = {values[3 * i], values[3 * i + 1], wrapAngle(values[3 * i + 2])};
-  }
+  poses_ = std::move(solved);
   return true;
 }
 

@@ -148,18 +148,6 @@ std::mutex& mrptRandomMutex() {
 
 mrpt::poses::CPose2D toMrpt(const Pose2& p) { return {p.x_m, p.y_m, p.yaw_rad}; }
 
-/// a then b, b expressed in a's frame.
-Pose2 compose(const Pose2& a, const Pose2& b) {
-  const double c = std::cos(a.yaw_rad), s = std::sin(a.yaw_rad);
-  return {a.x_m + c * b.x_m - s * b.y_m, a.y_m + s * b.x_m + c * b.y_m,
-          wrapAngle(a.yaw_rad + b.yaw_rad)};
-}
-
-Pose2 inverse(const Pose2& a) {
-  const double c = std::cos(a.yaw_rad), s = std::sin(a.yaw_rad);
-  return {-c * a.x_m - s * a.y_m, s * a.x_m - c * a.y_m, wrapAngle(-a.yaw_rad)};
-}
-
 }  // namespace
 
 struct Slam::Impl {
@@ -172,7 +160,7 @@ struct Slam::Impl {
   std::optional<Pose2> last_odometry;
   Pose2 map_from_odom;  ///< the last estimate composed with its odometry's inverse
   std::vector<double> update_ms;
-  std::vector<Pose2> trajectory;  ///< the estimate after each update
+  std::vector<Pose2> trajectory;  ///< icp, rbpf: the estimate after each update
   bool finished = false;
   /// Time stamps: MRPT's ICP-SLAM stamps the start pose with the wall clock and trusts odometry
   /// only when it is newer, so updates are stamped after it at a fixed interval (their values
@@ -238,7 +226,7 @@ Slam::Slam(const SlamOptions& options, const Pose2& start, std::uint64_t seed,
   s.options = options;
   s.mode = options.slamMode();
   if (s.mode == SlamMode::kNone) throw OptionError("slam.mode is none: there is no SLAM to run");
-  if (!std::isfinite(start.x_m) || !std::isfinite(start.y_m) || !std::isfinite(start.yaw_rad)) {
+  if (!isFinite(start)) {
     throw InvalidArgument("SLAM: the start pose is not finite");
   }
   s.seed = seed;
@@ -309,8 +297,7 @@ CellRect Slam::update(const LaserScan& scan, const Pose2& odometry) {
   if (n < 2 || !(scan.angle_increment_rad > 0.0)) {
     throw InvalidArgument("SLAM: a scan needs at least two beams and a positive angle increment");
   }
-  if (!std::isfinite(odometry.x_m) || !std::isfinite(odometry.y_m) ||
-      !std::isfinite(odometry.yaw_rad)) {
+  if (!isFinite(odometry)) {
     throw InvalidArgument("SLAM: the odometry pose is not finite");
   }
   if (s.graph) {
@@ -322,7 +309,6 @@ CellRect Slam::update(const LaserScan& scan, const Pose2& odometry) {
     if (!(clean.range_min_m > 0.0)) clean.range_min_m = 1e-3;
     const CellRect changed = s.graph->update(clean, odometry);
     ++s.updates;
-    s.trajectory.push_back(s.graph->pose(odometry));
     s.update_ms.push_back(std::chrono::duration<double, std::milli>(Clock::now() - t0).count());
     return changed;
   }

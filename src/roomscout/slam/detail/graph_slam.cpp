@@ -6,8 +6,6 @@
 #include <cmath>
 #include <limits>
 
-#include "roomscout/slam/detail/pose_ops.hpp"
-
 namespace roomscout::slam::detail {
 namespace {
 
@@ -280,7 +278,7 @@ CellRect GraphSlam::renderSubmapRect(int s, const CellRect& local) {
                                        Vec2(lg.origin_m() + Vec2(local.max_x, local.max_y) * res)};
   CellRect global;
   for (const Vec2& corner : corners) {
-    const Cell c = mg.cellOf(apply(submap.global_pose, corner));
+    const Cell c = mg.cellOf(transformPoint(submap.global_pose, corner));
     global.unite(CellRect{c.x - 1, c.y - 1, c.x + 2, c.y + 2});
   }
   return render(global.clippedTo(mg.width(), mg.height()));
@@ -301,7 +299,7 @@ CellRect GraphSlam::render(const CellRect& rect) {
     const Vec2 hi = lo + Vec2(lg.width(), lg.height()) * lg.resolution_m();
     const std::array<Vec2, 4> corners = {lo, Vec2(hi.x(), lo.y()), Vec2(lo.x(), hi.y()), hi};
     for (const Vec2& corner : corners) {
-      const Cell c = mg.cellOf(apply(submap.global_pose, corner));
+      const Cell c = mg.cellOf(transformPoint(submap.global_pose, corner));
       box.unite(CellRect{c.x - 1, c.y - 1, c.x + 2, c.y + 2});
     }
     box = CellRect{std::max(box.min_x, rect.min_x), std::max(box.min_y, rect.min_y),

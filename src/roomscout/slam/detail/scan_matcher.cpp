@@ -7,8 +7,6 @@
 #include <cmath>
 #include <limits>
 
-#include "roomscout/slam/detail/pose_ops.hpp"
-
 namespace roomscout::slam::detail {
 namespace {
 
@@ -106,7 +104,7 @@ std::vector<WallPair> pairWithWalls(const ProbabilityGrid& grid, const WallPoint
   pairs.reserve(points.size());
   const GridGeometry& g = walls.geometry();
   for (const Vec2& p : points) {
-    const Vec2 q = apply(pose, p);
+    const Vec2 q = transformPoint(pose, p);
     const Vec2 beam = q - pose.position();
     const Cell c = g.cellOf(q);
     double best = std::numeric_limits<double>::infinity();
@@ -135,7 +133,7 @@ std::vector<WallPair> pairWithWalls(const ProbabilityGrid& grid, const WallPoint
 double scoreAt(const ProbabilityGrid& grid, const std::vector<Vec2>& points, const Pose2& pose) {
   if (points.empty()) return 0.0;
   double sum = 0.0;
-  for (const Vec2& p : points) sum += grid.atPoint(apply(pose, p));
+  for (const Vec2& p : points) sum += grid.atPoint(transformPoint(pose, p));
   return sum / static_cast<double>(points.size());
 }
 

@@ -3,8 +3,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "roomscout/slam/detail/pose_ops.hpp"
-
 namespace roomscout::slam::detail {
 
 namespace {
