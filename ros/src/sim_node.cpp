@@ -49,10 +49,10 @@
 #include <nlohmann/json.hpp>
 
 #include "roomscout/core/errors.hpp"
-#include "roomscout/experiment/episode_setup.hpp"
 #include "roomscout/sim/column_world.hpp"
 #include "roomscout/sim/lidar_simulator.hpp"
 #include "roomscout/sim/simulation.hpp"
+#include "roomscout/sim/simulator_config.hpp"
 #include "roomscout/sim/world_model.hpp"
 #include "roomscout/sim/world_source.hpp"
 #include "roomscout_ros/fake_move_base.hpp"
@@ -197,16 +197,12 @@ struct Scenario {
 Scenario loadScenario(const NodeParameters& p) {
   Scenario s;
   try {
-    // The same resolution as `roomscout explore --config`; the method only selects which
-    // strategy group is used, and the node uses none.
-    experiment::RunSettings settings;
-    settings.config_file = p.config;
-    const experiment::EpisodeSetup setup =
-        experiment::makeEpisodeSetup("nearest_frontier", p.seed, settings);
-    s.config = setup.config;
-    for (const std::string& w : setup.warnings) ROS_WARN("%s", w.c_str());
-    s.lidar = setup.cloud.lidar;
-    s.lidar_noise = setup.cloud.lidar_noise;
+    // The file `roomscout explore --config` reads, resolved as it resolves it.
+    const sim::SimulatorConfig config = sim::loadSimulatorConfig(p.config);
+    s.config = config.episode;
+    for (const std::string& w : config.warnings) ROS_WARN("%s", w.c_str());
+    s.lidar = config.cloud.lidar;
+    s.lidar_noise = config.cloud.lidar_noise;
   } catch (const std::exception& e) {
     // Messages about an option's value do not name the file; those about the file do.
     const std::string what = e.what();

@@ -1,10 +1,11 @@
 #include "roomscout_ros/map_saver.hpp"
 
-#include "roomscout/experiment/analysis_maps_output.hpp"
 #include "roomscout/io/atomic_file.hpp"
 #include "roomscout/io/map_server.hpp"
 #include "roomscout/io/pcd_io.hpp"
 #include "roomscout/io/point_cloud_render.hpp"
+#include "roomscout/io/semantic_io.hpp"
+#include "roomscout/io/topology_io.hpp"
 
 namespace roomscout::ros1 {
 
@@ -17,7 +18,8 @@ void saveMaps(const std::filesystem::path& directory, const OccupancyGrid& grid,
                      "roomscout point cloud map, map frame of occupancy.yaml", 0.005);
   io::writeImageAtomic(directory / "pointcloud.png",
                        io::renderPointCloud(cloud_points, cloud_top_m));
-  experiment::writeAnalysisMaps(directory, rooms, skeleton, grid, nullptr);
+  io::writeTopologicalMap(directory, skeleton.topologicalMap(), grid);
+  io::writeSemanticMap(directory, *rooms.semanticMap(), grid);
 }
 
 }  // namespace roomscout::ros1
