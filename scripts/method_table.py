@@ -14,7 +14,12 @@ Per world, a Markdown table with one row per method:
 - T98, L98: means over the paired episodes, the seeds on which every row reached 98 %;
 - L98 / REF: the mean over those seeds of L98 / the reference row's L98 on the same seed;
 - beats VERSUS: of the seeds both reached 98 % on, the share where the row's L98 is shorter.
-Only noise-free records are read (options.noise.profile none or absent).
+Only noise-free records (options.noise.profile and slam.mode none or absent) fill these
+tables. With one --setting NOISE[+SLAM] (e.g. tb3, tb3+graph), the per-world tables are of that
+setting's runs instead. With --noisy-table, one table of the --setting runs alone: successes,
+ends and mean L98 per world. With --compact, each --setting adds a column of the same methods under that noise profile and SLAM mode: episodes that reached 98 % (and did not
+diverge) of all, episodes the method ended by itself, and the mean over the (world, seed)
+episodes that succeeded in both of the L98 under noise over the noise-free L98.
 """
 import argparse
 import json
@@ -45,10 +50,19 @@ def records(source):
             except json.JSONDecodeError:
                 print(f"method_table: {path}:{n}: not a JSON record, skipped", file=sys.stderr)
                 continue
-            noise = r.get("options", {}).get("noise", {}).get("profile", "none")
-            if noise != "none":
-                continue
             yield (label or r["method"]), r
+
+
+def setting_of(r):
+    """'none', or the record's noise profile and SLAM mode, e.g. 'tb3' or 'tb3+graph'."""
+    options = r.get("options", {})
+    noise = options.get("noise", {}).get("profile", "none")
+    slam = options.get("slam", {}).get("mode", "none")
+    return "none" if noise == "none" and slam == "none" else f"{noise}+{slam}".replace("+none", "")
+
+
+def succeeded(r):
+    return r["exploration_rate"] >= 0.98 and not (r.get("slam") or {}).get("diverged", False)
 
 
 def main():
@@ -59,6 +73,11 @@ def main():
     ap.add_argument("--worlds", help="comma-separated worlds, in this order (default: all)")
     ap.add_argument("--compact", action="store_true",
                     help="one table: a column per world with the paired L98 and its ratio")
+    ap.add_argument("--setting", action="append", default=[],
+                    help="with --compact: a column of the methods under NOISE[+SLAM]; repeatable")
+    ap.add_argument("--noisy-table", action="store_true",
+                    help="one table of the --setting runs alone: per method and setting, "
+                         "successes and ends of all, and the mean L98 of the successes per world")
     ap.add_argument("--seeds", action="append", default=[],
                     help="only seeds A-B, of every world or (WORLD=A-B) of one; repeatable")
     args = ap.parse_args()
@@ -77,18 +96,31 @@ def main():
 
     # (world, row) -> seed -> record; the first record of a key wins, as in `report`.
     runs = defaultdict(dict)
+    noisy = defaultdict(dict)  # (setting, world, row) -> seed -> record
     rows = []
     for source in args.sources:
         for row, r in records(source):
             if not wanted(r):
                 continue
-            runs[(r["world"], row)].setdefault(r["seed"], r)
             if row not in rows:
                 rows.append(row)
+            setting = setting_of(r)
+            if setting != "none":
+                noisy[(setting, r["world"], row)].setdefault(r["seed"], r)
+                continue
+            runs[(r["world"], row)].setdefault(r["seed"], r)
+    if args.setting and not args.compact and not args.noisy_table:
+        # The per-world tables of one noisy setting instead of the noise-free runs.
+        runs = defaultdict(dict, {(w, row): eps for (s, w, row), eps in noisy.items()
+                                  if s == args.setting[0]})
+    rows = [row for row in rows if any(key[1] == row for key in runs)]
     worlds = args.worlds.split(",") if args.worlds else sorted({w for w, _ in runs})
     rows.sort(key=lambda row: ORDER.index(row) if row in ORDER else len(ORDER))
     if args.compact:
-        compact(args, runs, rows, worlds)
+        compact(args, runs, noisy, rows, worlds)
+        return
+    if args.noisy_table:
+        noisy_table(args, noisy, worlds)
         return
     print(f"T98 and L98: means over the paired seeds, those on which every row of the world's table "
           f"reached 98 %. L98 / {args.reference}: the mean over those seeds of the row's L98 over "
@@ -135,19 +167,56 @@ def main():
             print("| " + " | ".join(cells) + " |")
 
 
+def noisy_table(args, noisy, worlds):
+    """Per method, for each --setting: episodes that succeeded and that ended by themselves, of
+    all, and per world the mean L98 over the successful episodes."""
+    print("Per setting: episodes that reached 98 % (SLAM not diverged), and that the method "
+          "ended by itself before the time limit, of all; per world the mean L98 (m) of the "
+          "successful episodes, with their number when not all succeeded.")
+    methods = sorted({row for (_, _, row) in noisy},
+                     key=lambda row: ORDER.index(row) if row in ORDER else len(ORDER))
+    head = "| method |" + "".join(
+        f" {s}: success | {s}: ended |" + "".join(f" {s}: L98 {w} |" for w in worlds)
+        for s in args.setting)
+    print()
+    print(head)
+    print("|" + "---|" * (head.count("|") - 1))
+    for row in methods:
+        cells = [row]
+        for setting in args.setting:
+            eps = [r for w in worlds for r in noisy.get((setting, w, row), {}).values()]
+            if not eps:
+                cells += ["–", "–"] + ["–"] * len(worlds)
+                continue
+            cells.append(f"{sum(succeeded(r) for r in eps)}/{len(eps)}")
+            cells.append(f"{sum(not r['timed_out'] for r in eps)}/{len(eps)}")
+            for world in worlds:
+                world_eps = list(noisy.get((setting, world, row), {}).values())
+                ok = [r["l98_m"] for r in world_eps if succeeded(r) and r["l98_m"]]
+                cell = f"{statistics.mean(ok):.0f}" if ok else "–"
+                if ok and len(ok) < len(world_eps):
+                    cell += f" ({len(ok)}/{len(world_eps)})"
+                cells.append(cell)
+        print("| " + " | ".join(cells) + " |")
+
+
 def paired_seeds(runs, world, present):
     seeds = set.intersection(*(set(runs[(world, row)]) for row in present))
     return sorted(s for s in seeds
                   if all(runs[(world, row)][s]["l98_m"] is not None for row in present))
 
 
-def compact(args, runs, rows, worlds):
+def compact(args, runs, noisy, rows, worlds):
     """One table: per world the paired mean L98 and its mean ratio to the reference; success
-    over all worlds."""
+    over all worlds; per --setting, success, ended and the paired L98 ratio to noise-free."""
     print(f"Per world: L98 (m), the mean over the seeds on which every method reached 98 %, and "
           f"in brackets the mean over those seeds of L98 / {args.reference}'s L98 on the same "
-          f"seed. Success: episodes whose final rate is >= 98 %, all worlds.")
-    head = "| method | " + " | ".join(f"{w}" for w in worlds) + " | success |"
+          f"seed. Success: episodes whose final rate is >= 98 %, all worlds." +
+          (" Per setting: episodes that succeeded (reached 98 %, SLAM not diverged) and that "
+           "ended by themselves, of all; in brackets the mean, over the episodes that succeeded "
+           "with and without noise, of L98 under noise / L98 noise-free." if args.setting else ""))
+    head = ("| method | " + " | ".join(f"{w}" for w in worlds) + " | success |" +
+            "".join(f" {s} |" for s in args.setting))
     print()
     print(head)
     print("|" + "---|" * (head.count("|") - 1))
@@ -171,6 +240,21 @@ def compact(args, runs, rows, worlds):
             ratio = statistics.mean(eps[s]["l98_m"] / runs[(world, ref)][s]["l98_m"] for s in paired)
             cells.append(f"{l98:.0f} ({ratio:.2f})")
         cells.append(f"{ok}/{total}")
+        for setting in args.setting:
+            ok = ended = total = 0
+            ratios = []
+            for world in worlds:
+                eps = noisy.get((setting, world, row), {})
+                clean = runs.get((world, row), {})
+                for seed, r in eps.items():
+                    total += 1
+                    ok += succeeded(r)
+                    ended += not r["timed_out"]
+                    base = clean.get(seed)
+                    if succeeded(r) and base and base["l98_m"] and r["l98_m"]:
+                        ratios.append(r["l98_m"] / base["l98_m"])
+            ratio = f" ({statistics.mean(ratios):.2f}×)" if ratios else ""
+            cells.append(f"{ok}/{total}, ended {ended}{ratio}" if total else "–")
         print("| " + " | ".join(cells) + " |")
 
 

@@ -83,7 +83,7 @@ def main():
                      else "–")
             done = [r["l_done_m"] for r in b if r.get("l_done_m") is not None]
             ate = [r["slam"]["ate_rmse_m"] for r in b if r.get("slam")]
-            precision = [r["slam"]["map_precision"] for r in b if r.get("slam")]
+            precision = [r["map_accuracy"]["occupied_precision"] for r in b if r.get("slam")]
             diverged = sum(1 for r in b if r.get("slam", {}).get("diverged"))
             print(f"| {world} | {method} | {mean([r['exploration_rate'] for r in a]):.3f} | "
                   f"{mean([r['exploration_rate'] for r in b]):.3f} | {cell(la, len(a))} | "

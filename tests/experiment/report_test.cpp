@@ -432,8 +432,9 @@ const std::string kIcp =
     R"("slam": {"mode": "icp", "diverged_ate_m": 1.0}})";
 std::string slamBlock(double ate_m, bool diverged) {
   return R"(, "slam": {"mode": "icp", "ate_rmse_m": )" + std::to_string(ate_m) +
-         R"(, "ate_max_m": 2.0, "heading_rmse_rad": 0.02, "map_precision": 0.8, "diverged": )" +
-         (diverged ? "true" : "false") + "}";
+         R"(, "ate_max_m": 2.0, "heading_rmse_rad": 0.02, "diverged": )" +
+         (diverged ? "true" : "false") +
+         R"(}, "map_accuracy": {"false_occupied": 0.02, "occupied_precision": 0.9})";
 }
 
 /// A noise-free bench ("ideal": one old record without the noise and slam options, one with
@@ -535,6 +536,12 @@ TEST(ReportSettings, Table4SetsEachSettingBesideTheMainOne) {
   EXPECT_DOUBLE_EQ(icp.t98_s.mean, 140.0);  // of the two successes
   EXPECT_DOUBLE_EQ(icp.l98_m.mean, 32.0);
   EXPECT_NEAR(icp.ate_rmse_m.mean, 1.9 / 3.0, 1e-12);  // every episode's
+  EXPECT_DOUBLE_EQ(icp.false_occupied.mean, 0.02);
+  EXPECT_EQ(icp.false_occupied.n, 3u);
+  // Paired with the noise-free episodes: seeds 1 and 2 succeeded in both (30 + 34 against
+  // 20 + 24 m); seed 3 diverged.
+  EXPECT_EQ(icp.pairs, 2u);
+  EXPECT_DOUBLE_EQ(*icp.l98_ratio, 64.0 / 44.0);
   const SettingStats& ideal = t4.cells.at({"small_house", "rrt"}).at("");
   EXPECT_EQ(ideal.successes, 2u);
   EXPECT_DOUBLE_EQ(ideal.l98_m.mean, 22.0);
@@ -543,18 +550,20 @@ TEST(ReportSettings, Table4SetsEachSettingBesideTheMainOne) {
   EXPECT_TRUE(contains(md, "# Table IV: exploration under noise and SLAM\n")) << md;
   EXPECT_TRUE(contains(md,
                        "| World | Method | noise-free T98 (s) | noise-free L98 (m) | "
-                       "noise-free success | noise tb3, slam icp T98 (s) | noise tb3, slam icp "
+                       "noise-free success | noise-free false occupied (%) | noise-free "
+                       "occupied precision | noise tb3, slam icp T98 (s) | noise tb3, slam icp "
                        "L98 (m) | noise tb3, slam icp success | noise tb3, slam icp ATE (m) | "
-                       "noise tb3, slam icp L98 ratio | noise tb3 T98 (s) |"))
+                       "noise tb3, slam icp L98 ratio | noise tb3, slam icp false occupied (%) | "
+                       "noise tb3, slam icp occupied precision | noise tb3 T98 (s) |"))
       << md;
   EXPECT_TRUE(contains(md,
-                       "| small_house | RRT | 110.0 ± 14.1 | 22.0 ± 2.8 | 2/2 (100 %) | "
+                       "| small_house | RRT | 110.0 ± 14.1 | 22.0 ± 2.8 | 2/2 (100 %) | – | – | "
                        "140.0 ± 14.1 | 32.0 ± 2.8 | 2/3 (67 %), 1 diverged | 0.63 ± 0.76 | "
-                       "1.45× | – | – | – | – | – |"))
+                       "1.45× (2) | 2.00 | 0.900 | – | – | – | – | – | – | – |"))
       << md;
   EXPECT_TRUE(contains(md,
-                       "| medium_house | MMPF | – | – | – | – | – | – | – | – | 300.0 | 80.0 "
-                       "| 1/1 (100 %) | – | – |"))
+                       "| medium_house | MMPF | – | – | – | – | – | – | – | – | – | – | – | – "
+                       "| 300.0 | 80.0 | 1/1 (100 %) | – | – | – | – |"))
       << md;
 }
 

@@ -92,3 +92,37 @@ TEST_F(GrazingWall, AnOpeningSeenSquareOnIsCleared) {
 
 }  // namespace
 }  // namespace roomscout
+
+namespace roomscout {
+namespace {
+
+TEST(OccupancyMapper, ScansWithoutValidReturnsAddNoWallAndNoFreeSpace) {
+  const GridGeometry geometry{Vec2(-5.0, -5.0), 0.05, 200, 200};
+  const Pose2 pose{0.0, 0.0, 0.3};
+  LaserScan scan;
+  scan.angle_min_rad = -std::numbers::pi;
+  scan.angle_increment_rad = 2.0 * std::numbers::pi / 360.0;
+  scan.range_min_m = 0.12;
+  scan.range_max_m = 3.5;
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  const float inf = std::numeric_limits<float>::infinity();
+  for (const float bad : {nan, -inf, 0.0f, 0.05f, 3.6f, 20.0f}) {
+    OccupancyGrid grid(geometry);
+    OccupancyMapper mapper(grid);
+    scan.ranges_m.assign(360, bad);
+    for (int i = 0; i < 3; ++i) mapper.integrate(scan, pose);
+    for (std::size_t i = 0; i < geometry.cellCount(); ++i)
+      ASSERT_TRUE(grid.isUnknown(i)) << "reading " << bad << " changed cell " << i;
+  }
+  // +inf is "nothing within range": free space up to range_max_m, no wall.
+  OccupancyGrid grid(geometry);
+  OccupancyMapper mapper(grid);
+  scan.ranges_m.assign(360, inf);
+  mapper.integrate(scan, pose);
+  EXPECT_TRUE(grid.isFree(geometry.index(geometry.cellOf({3.3, 0.0}))));
+  EXPECT_TRUE(grid.isUnknown(geometry.index(geometry.cellOf({3.7, 0.0}))));
+  for (std::size_t i = 0; i < geometry.cellCount(); ++i) ASSERT_FALSE(grid.isOccupied(i));
+}
+
+}  // namespace
+}  // namespace roomscout

@@ -47,7 +47,7 @@ INSTANTIATE_TEST_SUITE_P(Worlds, BuiltinWorldExploration,
 
 // Every registered method explores the two houses (seed 1, with the semantic map built as in
 // `roomscout explore`) and declares the end itself. The large office, 10 seeds and the
-// comparison between methods are the bench's job (README "Benchmarks"), with one exception
+// comparison between methods are the bench's job (docs/bench.md), with one exception
 // below (rrt in the medium house reaches 98 % but does not end). The ablations of
 // semantic_paper run on the small house only, to keep the suite short; semantic_paper itself
 // runs in both houses.

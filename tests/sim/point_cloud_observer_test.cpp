@@ -12,10 +12,10 @@ void drive(PointCloudObserver& observer, const WorldModel& model, double seconds
   const OccupancyGrid grid(GridGeometry(Vec2::Zero(), 0.05, 10, 10));
   for (int i = 0; i <= static_cast<int>(seconds * 20); ++i) {
     const double t = i * 0.05;
-    observer.onStep(EpisodeSnapshot{t, Pose2{2.0 + 0.2 * t, 2.5, 0.0}, grid, model, false});
+    observer.onStep(EpisodeSnapshot{t, Pose2{2.0 + 0.2 * t, 2.5, 0.0}, grid, model, false, {}});
   }
   observer.onFinish(
-      EpisodeSnapshot{seconds, Pose2{2.0 + 0.2 * seconds, 2.5, 0.0}, grid, model, true});
+      EpisodeSnapshot{seconds, Pose2{2.0 + 0.2 * seconds, 2.5, 0.0}, grid, model, true, {}});
 }
 
 TEST(PointCloudObserver, InsertsKeyframesOnlyAndTimesThem) {

@@ -25,7 +25,9 @@ TEST(Simulation, ScansAtTheLasersRateAndSamplesTheRateEverySecond) {
     const Sensed sensed = sim.sense();
     scans += sensed.scan.has_value();
     samples += sensed.sampled;
-    if (sensed.scan) EXPECT_FALSE(sensed.changed.empty());
+    if (sensed.scan) {
+      EXPECT_FALSE(sensed.changed.empty());
+    }
     sim.act({});
     ASSERT_TRUE(sim.step());
   }

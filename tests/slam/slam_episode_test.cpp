@@ -1,7 +1,11 @@
-// Whole episodes with SLAM in the loop: MRPT estimates the pose, the robot maps and explores
-// with the estimate, and the harness scores the estimate and the map against the truth.
+// Whole episodes with SLAM in the loop: a SLAM (the graph SLAM or MRPT's ICP) estimates the pose,
+// the robot maps and explores with the estimate, and the harness scores both against the truth.
 
 #include <gtest/gtest.h>
+
+#include <string>
+#include <tuple>
+#include <vector>
 
 #include "roomscout/exploration/strategy_registry.hpp"
 #include "roomscout/sim/builtin_worlds.hpp"
@@ -28,7 +32,7 @@ TEST(SlamEpisode, IcpWithoutNoiseTracksTheTruthWithinACellOrTwo) {
   EXPECT_EQ(r.slam->error.samples, r.trajectory.size());
   EXPECT_LT(r.slam->error.rmse_m, 0.1);  // two map cells
   EXPECT_LT(r.slam->error.heading_rmse_rad, 0.02);
-  EXPECT_GT(r.slam->map_precision, 0.8);
+  EXPECT_GT(r.map_accuracy.occupied_precision, 0.8);
   EXPECT_FALSE(r.slam->diverged);
   EXPECT_GE(r.exploration_rate, 0.93);
   EXPECT_EQ(r.slam_update.count, r.trajectory.size());
@@ -49,6 +53,34 @@ TEST_P(NoisySlamEpisode, Tb3NoiseWithIcpExploresMostOfTheSmallHouse) {
 
 INSTANTIATE_TEST_SUITE_P(Methods, NoisySlamEpisode,
                          ::testing::Values("nearest_frontier", "semantic"));
+
+// Every method explores the small house under the TurtleBot3's noise to 98 % and declares the
+// end itself: with the true pose, and with the graph SLAM's pose and map.
+class Tb3Episode : public ::testing::TestWithParam<std::tuple<std::string, std::string>> {};
+
+TEST_P(Tb3Episode, ReachesAtLeast98PercentAndEnds) {
+  const auto& [method, slam] = GetParam();
+  const EpisodeResult r = exploreSmallHouse(method, "tb3", slam, 1);
+  EXPECT_GE(r.exploration_rate, 0.98);
+  EXPECT_FALSE(r.timed_out) << "ended only by the time limit " << r.max_time_s << " s";
+  EXPECT_TRUE(r.t_done_s.has_value());
+  if (r.slam) {
+    EXPECT_FALSE(r.slam->diverged);
+  }
+}
+
+std::vector<std::string> methodsWithoutAblations() {
+  std::vector<std::string> names = strategyNames();
+  std::erase_if(names, [](const std::string& n) { return n.ends_with("_only"); });
+  return names;
+}
+
+INSTANTIATE_TEST_SUITE_P(SmallHouse, Tb3Episode,
+                         ::testing::Combine(::testing::ValuesIn(methodsWithoutAblations()),
+                                            ::testing::Values("none", "graph")),
+                         [](const auto& info) {
+                           return std::get<0>(info.param) + "_slam_" + std::get<1>(info.param);
+                         });
 
 TEST(SlamEpisode, WithoutSlamThereIsNoSlamRecordAndTheEstimateIsTheTruth) {
   const EpisodeResult r = exploreSmallHouse("nearest_frontier", "tb3", "none", 1);

@@ -34,8 +34,7 @@ std::vector<LaserScan> mappingScans(const slam::Rawlog& log) {
   std::vector<LaserScan> scans;
   scans.reserve(log.scans.size());
   for (const slam::RawlogScan& s : log.scans) {
-    scans.push_back(s.scan);
-    scans.back().range_max_m = std::min(scans.back().range_max_m, kRawlogMaxRange_m);
+    scans.push_back(cappedToRange(s.scan, kRawlogMaxRange_m));
   }
   return scans;
 }

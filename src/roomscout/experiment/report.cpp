@@ -35,7 +35,8 @@ SettingComparison compareSettings(const std::vector<EpisodeSummary>& episodes,
   SettingComparison table;
   struct Samples {
     std::size_t episodes = 0, successes = 0, diverged = 0;
-    std::vector<double> t98, l98, ate;
+    std::vector<double> t98, l98, ate, false_occupied, occupied_precision;
+    std::map<std::pair<std::string, std::uint64_t>, double> l98_by_episode;  ///< successes
   };
   std::map<std::pair<std::string, std::string>, std::map<std::string, Samples>> cells;
   std::map<std::string, std::pair<bool, std::set<std::string>>> rows;  // name -> (group, worlds)
@@ -53,9 +54,14 @@ SettingComparison compareSettings(const std::vector<EpisodeSummary>& episodes,
     if (e.succeeded()) {
       ++c.successes;
       if (e.t98_s) c.t98.push_back(*e.t98_s);
-      if (e.l98_m) c.l98.push_back(*e.l98_m);
+      if (e.l98_m) {
+        c.l98.push_back(*e.l98_m);
+        c.l98_by_episode[{e.key.world, e.key.seed}] = *e.l98_m;
+      }
     }
     if (e.ate_rmse_m) c.ate.push_back(*e.ate_rmse_m);
+    if (e.false_occupied) c.false_occupied.push_back(*e.false_occupied);
+    if (e.occupied_precision) c.occupied_precision.push_back(*e.occupied_precision);
   }
   std::set<std::string> row_names, methods;
   for (const auto& [key, by_setting] : cells) {
@@ -63,6 +69,7 @@ SettingComparison compareSettings(const std::vector<EpisodeSummary>& episodes,
     row_names.insert(key.first);
     methods.insert(key.second);
     auto& out = table.cells[key];
+    const auto main_samples = by_setting.find(main);
     for (const auto& [setting, c] : by_setting) {
       SettingStats& s = out[setting];
       s.episodes = c.episodes;
@@ -71,6 +78,18 @@ SettingComparison compareSettings(const std::vector<EpisodeSummary>& episodes,
       s.t98_s = Stat::of(c.t98);
       s.l98_m = Stat::of(c.l98);
       s.ate_rmse_m = Stat::of(c.ate);
+      s.false_occupied = Stat::of(c.false_occupied);
+      s.occupied_precision = Stat::of(c.occupied_precision);
+      if (setting == main || main_samples == by_setting.end()) continue;
+      double sum = 0.0, main_sum = 0.0;
+      for (const auto& [episode, l98] : c.l98_by_episode) {
+        const auto other = main_samples->second.l98_by_episode.find(episode);
+        if (other == main_samples->second.l98_by_episode.end()) continue;
+        ++s.pairs;
+        sum += l98;
+        main_sum += other->second;
+      }
+      if (s.pairs && main_sum > 0.0) s.l98_ratio = sum / main_sum;
     }
   }
   for (const std::string& name : row_names) {

@@ -102,6 +102,12 @@ struct SettingStats {
   Stat t98_s;                 ///< over the successful episodes
   Stat l98_m;                 ///< over the successful episodes
   Stat ate_rmse_m;            ///< over the episodes that recorded it
+  Stat false_occupied;        ///< map_accuracy, over the episodes that recorded it
+  Stat occupied_precision;    ///< map_accuracy, over the episodes that recorded it
+  /// Paired with the main setting: the (world, seed) episodes of the same method that
+  /// succeeded in both, and this setting's mean L98 over the main setting's on them.
+  std::size_t pairs = 0;
+  std::optional<double> l98_ratio;
 };
 
 /// Table IV: each method under the settings other than the main one (see Report), beside the

@@ -193,6 +193,13 @@ EpisodeSummary summarizeRecord(const nlohmann::json& record, const std::string& 
       e.maps[type] = m;
     }
   }
+  if (const auto accuracy = record.find("map_accuracy");
+      accuracy != record.end() && !accuracy->is_null()) {
+    if (!accuracy->is_object()) throw InputError(where, "'map_accuracy' must be an object");
+    const std::string w = where + ": map_accuracy";
+    e.false_occupied = optionalNumber(*accuracy, "false_occupied", w);
+    e.occupied_precision = optionalNumber(*accuracy, "occupied_precision", w);
+  }
   readWorldAndOptions(record, where, e);
   readNoiseAndSlam(record, where, e);
   readCurve(record, where, e);

@@ -76,6 +76,10 @@ struct EpisodeSummary {
   std::optional<double> ate_rmse_m;
   /// SLAM's error exceeded the configured bound (record's slam.diverged): not a success.
   bool slam_diverged = false;
+  /// The final map's map_accuracy.false_occupied and .occupied_precision (none in records
+  /// older than them).
+  std::optional<double> false_occupied;
+  std::optional<double> occupied_precision;
 
   /// Final exploration rate >= kSuccessRate and SLAM (if any) did not diverge.
   bool succeeded() const;

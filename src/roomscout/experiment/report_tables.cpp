@@ -337,12 +337,20 @@ std::optional<plots::HtmlTable> slamCells(const Report& report) {
   table.caption = "Table IV: exploration under noise and SLAM";
   table.header = {"World", "Method"};
   const std::string main = settingTitle(report.main_setting);
-  for (const char* column : {" T98 (s)", " L98 (m)", " success"})
+  for (const char* column :
+       {" T98 (s)", " L98 (m)", " success", " false occupied (%)", " occupied precision"})
     table.header.push_back(main + column);
   for (const std::string& setting : comparison.settings) {
-    for (const char* column : {" T98 (s)", " L98 (m)", " success", " ATE (m)", " L98 ratio"})
+    for (const char* column : {" T98 (s)", " L98 (m)", " success", " ATE (m)", " L98 ratio",
+                               " false occupied (%)", " occupied precision"})
       table.header.push_back(setting + column);
   }
+  auto accuracy = [](const SettingStats& s, std::vector<std::string>& cells) {
+    cells.push_back(s.false_occupied.n ? formatString("%.2f", 100.0 * s.false_occupied.mean)
+                                       : std::string("–"));
+    cells.push_back(s.occupied_precision.n ? formatString("%.3f", s.occupied_precision.mean)
+                                           : std::string("–"));
+  };
   for (const ReportRow& row : comparison.rows) {
     for (const std::string& method : comparison.methods) {
       const auto cell = comparison.cells.find({row.name, method});
@@ -355,13 +363,14 @@ std::optional<plots::HtmlTable> slamCells(const Report& report) {
         cells.push_back(meanSd(main_stats->t98_s));
         cells.push_back(meanSd(main_stats->l98_m));
         cells.push_back(successText(main_stats->successes, main_stats->episodes));
+        accuracy(*main_stats, cells);
       } else {
-        cells.insert(cells.end(), 3, "–");
+        cells.insert(cells.end(), 5, "–");
       }
       for (const std::string& setting : comparison.settings) {
         const auto it = by_setting.find(setting);
         if (it == by_setting.end()) {
-          cells.insert(cells.end(), 5, "–");
+          cells.insert(cells.end(), 7, "–");
           continue;
         }
         const SettingStats& s = it->second;
@@ -371,10 +380,9 @@ std::optional<plots::HtmlTable> slamCells(const Report& report) {
         if (s.diverged) success += ", " + std::to_string(s.diverged) + " diverged";
         cells.push_back(success);
         cells.push_back(meanSd(s.ate_rmse_m, "%.2f"));
-        const bool ratio =
-            main_stats && main_stats->l98_m.n && main_stats->l98_m.mean > 0.0 && s.l98_m.n;
-        cells.push_back(ratio ? formatString("%.2f", s.l98_m.mean / main_stats->l98_m.mean) + "×"
-                              : "–");
+        cells.push_back(s.l98_ratio ? formatString("%.2f× (%zu)", *s.l98_ratio, s.pairs)
+                                    : std::string("–"));
+        accuracy(s, cells);
       }
       table.rows.push_back(std::move(cells));
     }
@@ -387,13 +395,18 @@ std::string slamDescription() {
          "Tables I-III (noise-free when the results hold it: exact ranges and the true pose). A "
          "setting names its noise profile (noise.profile: tb3, the TurtleBot3's LDS-01 laser, "
          "VLP-16 lidar and wheel odometry, or harsh, 2.5 × their noise) and its SLAM mode "
-         "(slam.mode: icp, MRPT's ICP-SLAM, or rbpf, its particle-filter SLAM), whose pose "
+         "(slam.mode: graph, roomscout's graph SLAM, icp, MRPT's ICP-SLAM, or rbpf, its "
+         "particle-filter SLAM), whose pose "
          "estimate and map the robot explores with. T98 [s] and L98 [m] are mean ± sample "
          "standard deviation over each cell's successful episodes: final exploration rate ≥ 98 % "
          "and SLAM not diverged (a run whose ATE exceeded slam.diverged_ate_m counts as a "
          "failure, however much it explored). ATE [m]: the RMSE of the estimated against the "
-         "true positions over the run, mean ± sd over the cell's episodes; L98 ratio: the "
-         "setting's mean L98 over that of the first columns, same world and method.";
+         "true positions over the run, mean ± sd over the cell's episodes. L98 ratio: paired as "
+         "Table I is, the setting's mean L98 over that of the first columns on the (world, "
+         "seed) episodes of the same method that succeeded in both (their number in brackets). "
+         "False occupied: the share of reachable floor the final map calls occupied; occupied "
+         "precision: the share of the map's occupied cells within one cell of a true obstacle "
+         "(metrics.json map_accuracy), means over the cell's episodes.";
 }
 
 }  // namespace roomscout::experiment

@@ -86,8 +86,10 @@ CellRect OccupancyMapper::integrate(const LaserScan& scan, const Pose2& T_map_se
   hits_.clear();
   for (std::size_t i = 0; i < scan.ranges_m.size(); ++i) {
     const double r = scan.ranges_m[i];
+    // REP 117: +inf is "nothing within range" and clears the beam up to range_max_m; NaN,
+    // -inf and finite readings outside [range_min_m, range_max_m] carry no information.
     const bool hit = std::isfinite(r) && r >= scan.range_min_m && r <= scan.range_max_m;
-    if (!hit && std::isfinite(r) && r < scan.range_min_m) continue;  // too close: no information
+    if (!hit && !(std::isinf(r) && r > 0.0)) continue;
     const double length = hit ? r : scan.range_max_m;
     const double angle = T_map_sensor.yaw_rad + scan.angle_min_rad + i * scan.angle_increment_rad;
     const Vec2 dir(std::cos(angle), std::sin(angle));

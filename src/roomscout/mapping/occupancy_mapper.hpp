@@ -22,7 +22,8 @@ namespace roomscout {
 /// robot can ever close (a 0.5 m corridor's walls, seen from along it). Beams at steeper
 /// angles clear such a cell as before: an opened door still shows, and so do free cells that
 /// pose drift (SLAM) has drawn walls on. A wider angle keeps more of those drift walls.
-/// Beams without a return clear space up to the scan's range_max_m.
+/// Beams without a return (+inf, as REP 117 has it) clear space up to the scan's
+/// range_max_m; NaN, -inf and finite readings outside the scan's range carry no information.
 class OccupancyMapper {
  public:
   explicit OccupancyMapper(OccupancyGrid& grid)

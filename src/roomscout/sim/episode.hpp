@@ -17,6 +17,7 @@
 #include "roomscout/planning/path_follower.hpp"
 #include "roomscout/sim/episode_observer.hpp"
 #include "roomscout/sim/laser_simulator.hpp"
+#include "roomscout/sim/map_accuracy.hpp"
 #include "roomscout/sim/robot.hpp"
 #include "roomscout/sim/sensor_noise.hpp"
 #include "roomscout/sim/slam_metrics.hpp"
@@ -105,13 +106,13 @@ struct SlamResult {
   int matches_rejected = 0;     ///< graph: scan matches refused (odometry used)
   TimingStats loop_search;      ///< graph: per loop-closure search
   TimingStats optimise;         ///< graph: per optimisation
-  double map_precision = 1.0;   ///< see mapPrecision()
   bool diverged = false;        ///< error.rmse_m above slam.diverged_ate_m: the run does not count
 };
 
 struct EpisodeResult {
-  double exploration_rate = 0.0;   ///< final, in [0, 1] (with SLAM, of the SLAM map as it lies
-                                   ///< in the world frame: drift lowers it)
+  double exploration_rate = 0.0;   ///< final, in [0, 1]: ExplorationTruth::explorationRate() of
+                                   ///< the robot's map (with SLAM, as it lies in the world frame)
+  MapAccuracy map_accuracy;        ///< of the final map, in the world frame
   std::optional<double> t98_s;     ///< first time the rate reached completion_rate
   std::optional<double> l98_m;     ///< distance driven by then
   std::optional<double> t_done_s;  ///< when the strategy declared the end

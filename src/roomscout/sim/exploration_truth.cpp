@@ -112,7 +112,7 @@ double ExplorationTruth::reachableArea_m2() const {
 double ExplorationTruth::explorationRate(const OccupancyGrid& grid) const {
   if (reachable_.empty()) return 0.0;
   std::size_t known = 0;
-  for (std::uint32_t i : reachable_) known += grid.isFree(i) ? 1 : 0;
+  for (std::uint32_t i : reachable_) known += grid.isUnknown(i) ? 0 : 1;
   return static_cast<double>(known) / static_cast<double>(reachable_.size());
 }
 
@@ -130,9 +130,9 @@ void ExplorationRateCounter::update(const OccupancyGrid& grid, const CellRect& c
     std::size_t i = g.index({r.min_x, y});
     for (int x = r.min_x; x < r.max_x; ++x, ++i) {
       if (!reachable_[i]) continue;
-      const std::uint8_t now = grid.isFree(i) ? 1 : 0;
+      const std::uint8_t now = grid.isUnknown(i) ? 0 : 1;
       if (now != counted_[i]) {
-        known_free_ = now ? known_free_ + 1 : known_free_ - 1;
+        known_ = now ? known_ + 1 : known_ - 1;
         counted_[i] = now;
       }
     }
@@ -141,7 +141,7 @@ void ExplorationRateCounter::update(const OccupancyGrid& grid, const CellRect& c
 
 double ExplorationRateCounter::rate() const {
   const std::size_t n = truth_.reachableCells().size();
-  return n == 0 ? 0.0 : static_cast<double>(known_free_) / static_cast<double>(n);
+  return n == 0 ? 0.0 : static_cast<double>(known_) / static_cast<double>(n);
 }
 
 }  // namespace roomscout::sim

@@ -25,7 +25,9 @@ class ExplorationTruth {
   const std::vector<std::uint32_t>& reachableCells() const { return reachable_; }
   double reachableArea_m2() const;
 
-  /// Fraction of reachable cells that `grid` knows to be free, in [0, 1].
+  /// The exploration rate as the paper defines it, "the ratio of the explored region to the
+  /// whole environment": the fraction of reachable cells that `grid` knows, as free or as
+  /// occupied, in [0, 1]. Whether the map is right about them is MapAccuracy's business.
   double explorationRate(const OccupancyGrid& grid) const;
 
  private:
@@ -48,8 +50,8 @@ class ExplorationRateCounter {
  private:
   const ExplorationTruth& truth_;
   std::vector<std::uint8_t> reachable_;  ///< 1 for reachable cells
-  std::vector<std::uint8_t> counted_;    ///< 1 for reachable cells counted as known free
-  std::size_t known_free_ = 0;
+  std::vector<std::uint8_t> counted_;    ///< 1 for reachable cells counted as known
+  std::size_t known_ = 0;
 };
 
 /// The map grid matching a world: same origin as the raster, covering it, at `resolution_m`.

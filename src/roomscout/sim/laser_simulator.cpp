@@ -74,8 +74,12 @@ LaserScan LaserSimulator::scan(const Pose2& T_map_sensor) {
       const double sd_m = noise_.sd_m(r);
       if (sd_m > 0.0) r = std::max(0.0, r + sd_m * gauss(rng_));
     }
-    if (!std::isfinite(r) || r > options_.range_max_m) {
+    if (!std::isfinite(r)) {
       scan.ranges_m[i] = inf;
+    } else if (r > options_.range_max_m) {
+      // A real obstacle measured beyond the range by noise: reported as read, a value outside
+      // [range_min, range_max] that consumers discard (REP 117), not as "nothing within range".
+      scan.ranges_m[i] = static_cast<float>(r);
     } else if (r < options_.range_min_m) {
       scan.ranges_m[i] = 0.0f;  // below range_min: reported as an invalid (too close) reading
     } else {

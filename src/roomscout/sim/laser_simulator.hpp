@@ -35,7 +35,8 @@ class LaserSimulator {
   const RangeNoise& noise() const { return noise_; }
 
   /// A full scan from the sensor pose. Beams with no obstacle within range_max_m return +inf;
-  /// returns closer than range_min_m and lost returns (noise dropouts) read 0, as on the LDS-01.
+  /// returns closer than range_min_m and lost returns (noise dropouts) read 0, as on the LDS-01;
+  /// an obstacle within range that noise puts beyond range_max_m reads as measured.
   LaserScan scan(const Pose2& T_map_sensor);
 
   /// Exact distance along a ray to the first laser-solid raster cell, or +inf beyond max_m.

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <utility>
 
+#include "roomscout/sim/map_accuracy.hpp"
+
 namespace roomscout::sim {
 
 namespace {
@@ -189,6 +191,7 @@ void Simulation::finish() {
 EpisodeResult Simulation::takeResult() {
   EpisodeResult result;
   result.exploration_rate = rate_;
+  result.map_accuracy = mapAccuracy(grid_, truth_, world_);
   result.t98_s = t98_s_;
   result.l98_m = l98_m_;
   result.timed_out = timed_out_;
@@ -222,7 +225,6 @@ EpisodeResult Simulation::takeResult() {
     s.matches_rejected = stats.matches_rejected;
     s.loop_search = TimingStats::of(stats.loop_search_ms);
     s.optimise = TimingStats::of(stats.optimise_ms);
-    s.map_precision = mapPrecision(grid_, world_);
     s.diverged = s.error.rmse_m > config_.slam.diverged_ate_m;
     result.slam = s;
   }

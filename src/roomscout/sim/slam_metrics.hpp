@@ -1,16 +1,13 @@
 #pragma once
 // How far a robot's own estimate strays from the truth: the absolute trajectory error of its
-// estimated poses against the true ones, and how many of its map's obstacles are real.
+// estimated poses against the true ones (the map's own errors: map_accuracy.hpp).
 
 #include <cstddef>
 #include <vector>
 
 #include "roomscout/core/geometry.hpp"
-#include "roomscout/core/occupancy_grid.hpp"
 
 namespace roomscout::sim {
-
-class WorldModel;
 
 /// The robot at one time: where it was, and where it believed it was (the same pose when it
 /// is told the truth).
@@ -30,10 +27,5 @@ struct TrajectoryError {
 };
 
 TrajectoryError trajectoryError(const std::vector<TrajectorySample>& trajectory);
-
-/// Fraction of `map`'s occupied cells that lie within one cell of a true obstacle (a cell of
-/// the world's laser-plane raster that is solid within the map cell's 3 x 3 neighbourhood),
-/// in [0, 1]; 1 for a map with no occupied cell. `map` is in the world frame.
-double mapPrecision(const OccupancyGrid& map, const WorldModel& world);
 
 }  // namespace roomscout::sim

@@ -122,9 +122,8 @@ void GraphSlam::insertNode(const LaserScan& scan, const Pose2& odometry, const P
 }
 
 CellRect GraphSlam::update(const LaserScan& input, const Pose2& odometry) {
-  LaserScan scan = input;
-  if (options_.max_range_m > 0.0)
-    scan.range_max_m = std::min(scan.range_max_m, options_.max_range_m);
+  const LaserScan scan =
+      options_.max_range_m > 0.0 ? cappedToRange(input, options_.max_range_m) : input;
   std::vector<Vec2> points = pointsOf(scan);
   CellRect changed;
 
