@@ -3,20 +3,7 @@
 # compiles one file that includes every installed header against the installed targets, so a
 # public header that includes an internal (uninstalled) one fails here.
 # cmake -DBUILD_DIR=... -DSOURCE_DIR=... -DWORK_DIR=... -P check_installed_package.cmake
-foreach(v BUILD_DIR SOURCE_DIR WORK_DIR)
-  if(NOT DEFINED ${v})
-    message(FATAL_ERROR "${v} is not set")
-  endif()
-endforeach()
-file(REMOVE_RECURSE ${WORK_DIR})
-
-function(run)
-  execute_process(COMMAND ${ARGN} RESULT_VARIABLE result OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  message("${out}")
-  if(NOT result EQUAL 0)
-    message(FATAL_ERROR "failed (${result}): ${ARGN}\n${err}")
-  endif()
-endfunction()
+include(${CMAKE_CURRENT_LIST_DIR}/check_script_common.cmake)
 
 run(${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${WORK_DIR}/prefix)
 run(${CMAKE_COMMAND} -S ${SOURCE_DIR} -B ${WORK_DIR}/build -DCMAKE_BUILD_TYPE=Release

@@ -4,21 +4,7 @@
 # installs must write into their prefix only.
 # cmake -DBUILD_DIR=... -DSOURCE_DIR=... -DWORK_DIR=... [-DPYTHON_EXECUTABLE=...]
 #       [-DC_COMPILER=... -DCXX_COMPILER=...] -P check_installed_ros_package.cmake
-foreach(v BUILD_DIR SOURCE_DIR WORK_DIR)
-  if(NOT DEFINED ${v})
-    message(FATAL_ERROR "${v} is not set")
-  endif()
-endforeach()
-file(REMOVE_RECURSE ${WORK_DIR})
-
-function(run)
-  execute_process(COMMAND ${ARGN} RESULT_VARIABLE result OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  message("${out}")
-  if(NOT result EQUAL 0)
-    message(FATAL_ERROR "failed (${result}): ${ARGN}\n${err}")
-  endif()
-  set(run_output "${out}" PARENT_SCOPE)
-endfunction()
+include(${CMAKE_CURRENT_LIST_DIR}/check_script_common.cmake)
 
 # Installs build tree `build` under WORK_DIR/dest with prefix /`name`, and sets `name`_prefix
 # to where it went. DESTDIR keeps a file installed to an absolute path inside WORK_DIR too;

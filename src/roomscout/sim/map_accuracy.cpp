@@ -25,11 +25,6 @@ MapAccuracy mapAccuracy(const OccupancyGrid& map, const ExplorationTruth& truth,
     throw InvalidArgument("mapAccuracy: the map must lie on the truth's grid");
   }
   const GridGeometry& w = world.geometry();
-  const auto& solid = world.laserSolid();
-  // Outside the raster counts as solid, as for the laser (WorldModel::blocksLaser).
-  auto solid_at = [&](int x, int y) {
-    return !w.contains(Cell{x, y}) || solid[w.index(Cell{x, y})] != 0;
-  };
   const int width = g.width(), height = g.height();
   const double res = g.resolution_m();
 
@@ -40,7 +35,7 @@ MapAccuracy mapAccuracy(const OccupancyGrid& map, const ExplorationTruth& truth,
   for (std::uint32_t i : truth.reachableCells()) reachable[i] = 1;
   for (std::size_t i = 0; i < g.cellCount(); ++i) {
     const Cell c = w.cellOf(g.centerOf(g.cellAt(i)));
-    obstacle[i] = solid_at(c.x, c.y) ? 1 : 0;
+    obstacle[i] = world.blocksLaser(c) ? 1 : 0;
   }
   auto near_true_obstacle = [&](std::size_t i) {
     const Vec2 c = g.centerOf(g.cellAt(i));
@@ -49,7 +44,7 @@ MapAccuracy mapAccuracy(const OccupancyGrid& map, const ExplorationTruth& truth,
     const Cell hi = w.cellOf(c + Vec2(half, half) - Vec2(1e-9, 1e-9));
     for (int y = lo.y; y <= hi.y; ++y)
       for (int x = lo.x; x <= hi.x; ++x)
-        if (solid_at(x, y)) return true;
+        if (world.blocksLaser(Cell{x, y})) return true;
     return false;
   };
   // Whether any cell of i's 3 x 3 neighbourhood satisfies `pred`.
