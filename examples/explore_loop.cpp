@@ -71,8 +71,10 @@ int main(int argc, char** argv) {
     if (command.kind == ExplorerCommand::Kind::kDone) {
       const auto known_cells = std::count_if(map.states().begin(), map.states().end(),
                                              [](CellState c) { return c != CellState::kUnknown; });
-      std::printf("%6.1f s  done: %.1f m^2 known, %d goals\n", t,
-                  known_cells * map.geometry().resolution_m() * map.geometry().resolution_m(),
+      const double cell_m2 = map.geometry().resolution_m() * map.geometry().resolution_m();
+      const double plan_m2 = 10.0 * 4.0;  // the floor plan's walls and floor
+      std::printf("%6.1f s  done: %.1f %% of the floor plan known (%.1f m^2), %d goals\n", t,
+                  100.0 * known_cells * cell_m2 / plan_m2, known_cells * cell_m2,
                   explorer.stats().goals);
       return 0;
     }

@@ -4,9 +4,15 @@
 usage: scripts/method_table.py [--reference NAME] [--versus NAME] [--worlds W,...]
                                [--seeds [WORLD=]A-B]... SOURCE...
 
-SOURCE is a bench folder (its results.jsonl) or LABEL=FOLDER: with a label, every record of
-that folder is shown under LABEL instead of its method, so that runs of one method under
-different --config files (scripts/semantic_ablation.py) can be compared.
+SOURCE is a bench folder (its results.jsonl), a CSV this script wrote with --csv, or
+LABEL=FOLDER: with a label, every record of that folder is shown under LABEL instead of its
+method, so that runs of one method under different --config files (scripts/semantic_ablation.py)
+can be compared.
+
+--csv FILE writes the episodes the tables are made of, one row each (world, method, seed,
+setting, start mode, final rate, whether it timed out or the SLAM diverged, T98, L98, numbers
+written exactly): the same command on that file prints the same tables, and a test reruns some
+of its episodes to check that the binary still gives them.
 
 Per world, a Markdown table with one row per method:
 - success: episodes whose final exploration rate is >= 98 %, of all its episodes;
@@ -17,12 +23,19 @@ Per world, a Markdown table with one row per method:
 Only noise-free records (options.noise.profile and slam.mode none or absent) fill these
 tables. With one --setting NOISE[+SLAM] (e.g. tb3, tb3+graph), the per-world tables are of that
 setting's runs instead. With --noisy-table, one table of the --setting runs alone: successes,
-ends and mean L98 per world. With --compact, each --setting adds a column of the same methods under that noise profile and SLAM mode: episodes that reached 98 % (and did not
+ends and mean L98 per world. With --compact, one table: per world the paired mean L98 and its
+ratio, then successes and ends over all worlds; each --setting adds a column of the same
+methods under that noise profile and SLAM mode: episodes that reached 98 % (and did not
 diverge) of all, episodes the method ended by itself, and the mean over the (world, seed)
-episodes that succeeded in both of the L98 under noise over the noise-free L98.
+episodes that succeeded in both of the L98 under noise over the noise-free L98. --wins adds,
+per world, the method with the shortest paired mean L98 and on how many seeds it was shorter
+than each other method.
 """
 import argparse
+import csv
+import io
 import json
+import os
 import statistics
 import sys
 from collections import defaultdict
@@ -33,6 +46,55 @@ ORDER = ["rrt", "improved_rrt", "mmpf", "topo", "nearest_frontier", "semantic_pa
          "semantic_sampling_only", "semantic_score_only", "semantic"]
 
 
+CSV_FIELDS = ["world", "method", "seed", "setting", "start_mode", "exploration_rate", "timed_out",
+              "diverged", "t98_s", "l98_m"]
+
+
+def number(text):
+    return None if text == "" else float(text)
+
+
+def csv_records(path):
+    """The records of a CSV written by --csv, with the fields the tables read."""
+    with path.open(newline="") as f:
+        reader = csv.DictReader(f)
+        if reader.fieldnames != CSV_FIELDS:
+            sys.exit(f"method_table: {path}: expected the columns {','.join(CSV_FIELDS)}")
+        for n, row in enumerate(reader, 2):
+            try:
+                noise, _, slam = row["setting"].partition("+")
+                yield {
+                    "world": row["world"], "method": row["method"], "seed": int(row["seed"]),
+                    "start_mode": row["start_mode"],
+                    "exploration_rate": float(row["exploration_rate"]),
+                    "timed_out": row["timed_out"] == "true",
+                    "t98_s": number(row["t98_s"]), "l98_m": number(row["l98_m"]),
+                    "options": {"noise": {"profile": noise},
+                                "slam": {"mode": slam or "none"}},
+                    "slam": {"diverged": row["diverged"] == "true"} if slam else None,
+                }
+            except (KeyError, ValueError) as e:
+                sys.exit(f"method_table: {path}:{n}: bad row ({e})")
+
+
+def write_csv(path, episodes):
+    """Writes the episodes (records) to `path` as CSV, atomically."""
+    text = io.StringIO()
+    writer = csv.writer(text, lineterminator="\n")
+    writer.writerow(CSV_FIELDS)
+    for r in sorted(episodes, key=lambda r: (r["world"], r["method"], r["seed"], setting_of(r))):
+        def num(v):
+            return "" if v is None else repr(float(v))
+        writer.writerow([r["world"], r["method"], r["seed"], setting_of(r),
+                         r.get("start_mode", ""), num(r["exploration_rate"]),
+                         str(bool(r["timed_out"])).lower(),
+                         str(bool((r.get("slam") or {}).get("diverged", False))).lower(),
+                         num(r["t98_s"]), num(r["l98_m"])])
+    tmp = Path(str(path) + ".tmp")
+    tmp.write_text(text.getvalue())
+    os.replace(tmp, path)
+
+
 def records(source):
     label, _, folder = source.rpartition("=")
     path = Path(folder)
@@ -40,6 +102,10 @@ def records(source):
         path = path / "results.jsonl"
     if not path.is_file():
         sys.exit(f"method_table: no results file: {path}")
+    if path.suffix == ".csv":
+        for r in csv_records(path):
+            yield (label or r["method"]), r
+        return
     with path.open() as f:
         for n, line in enumerate(f, 1):
             line = line.strip()
@@ -80,6 +146,9 @@ def main():
                          "successes and ends of all, and the mean L98 of the successes per world")
     ap.add_argument("--seeds", action="append", default=[],
                     help="only seeds A-B, of every world or (WORLD=A-B) of one; repeatable")
+    ap.add_argument("--wins", action="store_true",
+                    help="with --compact: per world, the shortest method and its paired wins")
+    ap.add_argument("--csv", help="also write the episodes the tables are made of to this CSV")
     args = ap.parse_args()
     ranges = {}
     for spec in args.seeds:
@@ -98,10 +167,12 @@ def main():
     runs = defaultdict(dict)
     noisy = defaultdict(dict)  # (setting, world, row) -> seed -> record
     rows = []
+    used = []  # the records the tables read, for --csv
     for source in args.sources:
         for row, r in records(source):
             if not wanted(r):
                 continue
+            used.append(r)
             if row not in rows:
                 rows.append(row)
             setting = setting_of(r)
@@ -116,8 +187,12 @@ def main():
     rows = [row for row in rows if any(key[1] == row for key in runs)]
     worlds = args.worlds.split(",") if args.worlds else sorted({w for w, _ in runs})
     rows.sort(key=lambda row: ORDER.index(row) if row in ORDER else len(ORDER))
+    if args.csv:
+        write_csv(args.csv, used)
     if args.compact:
         compact(args, runs, noisy, rows, worlds)
+        if args.wins:
+            print_wins(args, runs, rows, worlds)
         return
     if args.noisy_table:
         noisy_table(args, noisy, worlds)
@@ -211,18 +286,19 @@ def compact(args, runs, noisy, rows, worlds):
     over all worlds; per --setting, success, ended and the paired L98 ratio to noise-free."""
     print(f"Per world: L98 (m), the mean over the seeds on which every method reached 98 %, and "
           f"in brackets the mean over those seeds of L98 / {args.reference}'s L98 on the same "
-          f"seed. Success: episodes whose final rate is >= 98 %, all worlds." +
+          f"seed. Success: episodes whose final rate is >= 98 %, all worlds. Ended: episodes the "
+          f"method ended by itself before the time limit, all worlds." +
           (" Per setting: episodes that succeeded (reached 98 %, SLAM not diverged) and that "
            "ended by themselves, of all; in brackets the mean, over the episodes that succeeded "
            "with and without noise, of L98 under noise / L98 noise-free." if args.setting else ""))
-    head = ("| method | " + " | ".join(f"{w}" for w in worlds) + " | success |" +
+    head = ("| method | " + " | ".join(f"{w}" for w in worlds) + " | success | ended |" +
             "".join(f" {s} |" for s in args.setting))
     print()
     print(head)
     print("|" + "---|" * (head.count("|") - 1))
     for row in rows:
         cells = [row]
-        ok = total = 0
+        ok = ended = total = 0
         for world in worlds:
             present = [r for r in rows if (world, r) in runs]
             if row not in present:
@@ -230,6 +306,7 @@ def compact(args, runs, noisy, rows, worlds):
                 continue
             eps = runs[(world, row)]
             ok += sum(1 for r in eps.values() if r["exploration_rate"] >= 0.98)
+            ended += sum(1 for r in eps.values() if not r["timed_out"])
             total += len(eps)
             paired = paired_seeds(runs, world, present)
             ref = args.reference if args.reference in present else present[0]
@@ -240,6 +317,7 @@ def compact(args, runs, noisy, rows, worlds):
             ratio = statistics.mean(eps[s]["l98_m"] / runs[(world, ref)][s]["l98_m"] for s in paired)
             cells.append(f"{l98:.0f} ({ratio:.2f})")
         cells.append(f"{ok}/{total}")
+        cells.append(f"{ended}/{total}")
         for setting in args.setting:
             ok = ended = total = 0
             ratios = []
@@ -256,6 +334,30 @@ def compact(args, runs, noisy, rows, worlds):
             ratio = f" ({statistics.mean(ratios):.2f}×)" if ratios else ""
             cells.append(f"{ok}/{total}, ended {ended}{ratio}" if total else "–")
         print("| " + " | ".join(cells) + " |")
+
+
+def print_wins(args, runs, rows, worlds):
+    """Per world: the row with the shortest paired mean L98, and against each other row, on how
+    many of the seeds both reached 98 % on its L98 was the shorter."""
+    print()
+    for world in worlds:
+        present = [r for r in rows if (world, r) in runs]
+        paired = paired_seeds(runs, world, present)
+        if not paired:
+            continue
+        means = {row: statistics.mean(runs[(world, row)][s]["l98_m"] for s in paired)
+                 for row in present}
+        best = min(present, key=lambda row: means[row])
+        mine = runs[(world, best)]
+        counts = []
+        for other in sorted((r for r in present if r != best), key=lambda r: means[r]):
+            theirs = runs[(world, other)]
+            both = [s for s in mine if s in theirs and mine[s]["l98_m"] is not None
+                    and theirs[s]["l98_m"] is not None]
+            won = sum(1 for s in both if mine[s]["l98_m"] < theirs[s]["l98_m"])
+            counts.append(f"`{other}` ({means[other]:.0f} m) on {won} of {len(both)}")
+        print(f"- {world}: `{best}` is shortest ({means[best]:.0f} m over {len(paired)} paired "
+              f"seeds); shorter than " + ", ".join(counts) + " seeds")
 
 
 if __name__ == "__main__":

@@ -34,7 +34,7 @@ export ROS_MASTER_URI="http://localhost:$port" ROS_HOSTNAME=localhost ROS_HOME="
 for _ in $(seq 100); do (echo > /dev/tcp/127.0.0.1/$port) 2>/dev/null && break; sleep 0.1; done
 /usr/bin/python3 /usr/bin/rosparam set /use_sim_time true
 start=$(date +%s.%N)
-"$bin/roomscout_sim_node" __name:=sim _world:="$world" _seed:="$seed" _config:="$work/options.yaml" _sync_topic:=/explore/cycle >"$work/sim.log" 2>&1 & pids+=($!)
+"$bin/roomscout_sim_node" __name:=sim _world:="$world" _seed:="$seed" _config:="$work/options.yaml" _sync_topic:=/explore/cycle _sync_timeout_s:=0 >"$work/sim.log" 2>&1 & pids+=($!)
 "$bin/roomscout_explore_node" __name:=explore _method:="$method" _seed:="$seed" _config:="$work/options.yaml" \
   _save_dir:="$work/ros_maps" >"$work/explore.log" 2>&1 & pids+=($!)
 until /usr/bin/python3 /usr/bin/rostopic echo -n1 /explore/status 2>/dev/null | grep -q '\\"done\\": true\|\\"done\\":true'; do

@@ -83,11 +83,12 @@ struct NodeParameters {
   std::string room_labels;
   std::string config;
   std::uint64_t seed = 1;
-  double real_time_factor = 0.0;  ///< 0 = as fast as possible
-  double map_period_s = 0.0;      ///< simulated; 0 = every scan
-  double goal_wait_s = 2.0;       ///< wall; 0 = no lockstep
-  std::string sync_topic;         ///< std_msgs/Time up to which an explorer caught up; "" = off
-  double sync_timeout_s = 1.0;    ///< wall: longest wait for it per step
+  double real_time_factor = 0.0;          ///< 0 = as fast as possible
+  double map_period_s = 0.0;              ///< simulated; 0 = every scan
+  std::string map_source = "map_server";  ///< the value convention of the published map
+  double goal_wait_s = 2.0;               ///< wall; 0 = no lockstep
+  std::string sync_topic;       ///< std_msgs/Time up to which an explorer caught up; "" = off
+  double sync_timeout_s = 1.0;  ///< wall: longest wait for it per step; 0 = no limit
   bool points = false;
   std::string map_frame = "map";
   std::string odom_frame = "odom";
@@ -178,6 +179,13 @@ NodeParameters readParameters(const ros::NodeHandle& pnh) {
   p.sync_topic = typedParam(pnh, "sync_topic", p.sync_topic);
   p.sync_timeout_s = nonNegativeParam(pnh, "sync_timeout_s", p.sync_timeout_s);
   p.points = typedParam(pnh, "points", p.points);
+  p.map_source = typedParam(pnh, "map_source", p.map_source);
+  MapConvention::named(p.map_source);  // a known source, or the list of them
+  if (p.map_source == "costmap") {
+    throw OptionError(
+        "~map_source: the sim node publishes a SLAM map (map_server, cartographer, "
+        "slam_toolbox or gmapping), not a costmap");
+  }
   p.map_frame = frameParam(pnh, "map_frame", p.map_frame);
   p.odom_frame = frameParam(pnh, "odom_frame", p.odom_frame);
   p.base_frame = frameParam(pnh, "base_frame", p.base_frame);
@@ -258,7 +266,8 @@ class SimNode {
   /// True while simulated time is held for an explorer's next goal (ends the hold on timeout).
   bool holding();
   /// True while simulated time waits for an explorer to say on ~sync_topic that it caught up
-  /// with the last step (up to ~sync_timeout_s of wall time per step).
+  /// with the last step (up to ~sync_timeout_s of wall time per step, or for as long as it
+  /// takes when that is 0).
   bool awaitingExplorer();
   void resetPacing();
   /// Waits, serving callbacks, until the wall clock catches up with the real-time factor.
@@ -567,7 +576,12 @@ void SimNode::publishPoints(const ros::Time& stamp) {
 void SimNode::publishMap(const ros::Time& stamp) {
   const sim::PublishedMap map = sim_.publishMap();
   nav_msgs::OccupancyGrid msg;
-  toMsg(map.grid, msg);
+  // Cartographer publishes probabilities; map_server, slam_toolbox and gmapping 0, 100 and -1.
+  if (params_.map_source == "cartographer") {
+    toProbabilityMsg(map.grid, msg);
+  } else {
+    toMsg(map.grid, msg);
+  }
   msg.header.stamp = stamp;
   msg.header.frame_id = params_.map_frame;
   msg.info.map_load_time = stamp;
@@ -592,6 +606,7 @@ void SimNode::publishStatus() {
       {"goals_succeeded", goals.succeeded},
       {"goals_aborted", goals.aborted},
       {"goals_canceled", goals.canceled},
+      {"pose", {sim_.robotPose().x_m, sim_.robotPose().y_m, sim_.robotPose().yaw_rad}},
   };
   std_msgs::String msg;
   msg.data = status.dump();
@@ -615,7 +630,8 @@ bool SimNode::awaitingExplorer() {
   }
   const ros::WallTime now = ros::WallTime::now();
   if (!sync_since_) sync_since_ = now;
-  if ((now - *sync_since_).toSec() < params_.sync_timeout_s) return true;
+  if (params_.sync_timeout_s <= 0.0 || (now - *sync_since_).toSec() < params_.sync_timeout_s)
+    return true;
   ROS_WARN_THROTTLE(10.0, "no explorer caught up on %s within %g s: running on",
                     params_.sync_topic.c_str(), params_.sync_timeout_s);
   sync_stamp_.reset();  // wait again from the next step on

@@ -1,6 +1,8 @@
 // `roomscout bench` killed with SIGKILL at random moments and resumed with the same command:
 // no episode is lost or recorded twice, every results line parses, the outputs and tables
-// are whole, and the records equal those of an uninterrupted run.
+// are whole, and the records equal those of an uninterrupted run. The moments are events of
+// the run (a record written, an episode's outputs appearing, a report file appearing), not
+// times, so a busy machine moves them no more than a quiet one.
 
 #include <fcntl.h>
 #include <gtest/gtest.h>
@@ -17,9 +19,10 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <map>
+#include <memory>
 #include <nlohmann/json.hpp>
-#include <optional>
 #include <random>
 #include <set>
 #include <sstream>
@@ -85,9 +88,11 @@ class BenchKillResumeTest : public ::testing::Test {
             out.string()};
   }
 
-  /// Runs roomscout with `args`, output appended to log.txt; when `kill_after_s` is given,
-  /// sends SIGKILL after that long (if the run has not ended by itself by then).
-  Outcome run(const std::vector<std::string>& args, std::optional<double> kill_after_s = {}) {
+  /// Runs roomscout with `args`, output appended to log.txt. With `kill_when`, polled every
+  /// millisecond from the start, sends SIGKILL `then_s` after it first holds (if the run has
+  /// not ended by itself by then).
+  Outcome run(const std::vector<std::string>& args, const std::function<bool()>& kill_when = {},
+              double then_s = 0.0) {
     std::vector<std::string> all = {ROOMSCOUT_BINARY};
     all.insert(all.end(), args.begin(), args.end());
     std::vector<char*> argv;
@@ -109,20 +114,26 @@ class BenchKillResumeTest : public ::testing::Test {
     }
     Outcome outcome;
     int status = 0;
-    if (kill_after_s) {
+    if (kill_when) {
       // Poll so that a run that ends early is seen; the child stays a zombie until reaped,
       // so its pid cannot be reused before the kill.
-      const Clock::time_point deadline = start + std::chrono::duration_cast<Clock::duration>(
-                                                     std::chrono::duration<double>(*kill_after_s));
-      while (Clock::now() < deadline) {
+      const auto ended = [&] {
         siginfo_t info{};
-        if (waitid(P_PID, static_cast<id_t>(pid), &info, WEXITED | WNOHANG | WNOWAIT) == 0 &&
-            info.si_pid == pid) {
+        return waitid(P_PID, static_cast<id_t>(pid), &info, WEXITED | WNOHANG | WNOWAIT) == 0 &&
+               info.si_pid == pid;
+      };
+      bool event = false;
+      while (!ended()) {
+        if (kill_when()) {
+          event = true;
           break;
         }
-        std::this_thread::sleep_for(std::chrono::microseconds(500));
+        std::this_thread::sleep_for(std::chrono::milliseconds(1));
       }
-      ::kill(pid, SIGKILL);
+      if (event) {
+        std::this_thread::sleep_for(std::chrono::duration<double>(then_s));
+        ::kill(pid, SIGKILL);
+      }
     }
     while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
     }
@@ -189,6 +200,42 @@ class BenchKillResumeTest : public ::testing::Test {
     }
   }
 
+  /// What a bench folder holds: complete records and episode folders (runs/ and .scratch/,
+  /// world/method/seedN).
+  struct Snapshot {
+    std::size_t records = 0;
+    std::set<std::string> episode_dirs;
+  };
+  static Snapshot snapshot(const fs::path& bench) {
+    Snapshot s;
+    std::error_code ec;
+    if (fs::exists(bench / "results.jsonl", ec)) {
+      // Complete lines only; a line being written is not counted yet.
+      const std::string text = readText(bench / "results.jsonl");
+      s.records = static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n'));
+    }
+    for (const char* root : {"runs", ".scratch"}) {
+      for (auto it = fs::recursive_directory_iterator(bench / root, ec);
+           !ec && it != fs::recursive_directory_iterator(); it.increment(ec)) {
+        if (it.depth() == 2) s.episode_dirs.insert(it->path().string());
+      }
+      ec.clear();
+    }
+    return s;
+  }
+  /// The files at the top of a bench folder and when each was last written.
+  static std::map<std::string, fs::file_time_type> topFileTimes(const fs::path& bench) {
+    std::map<std::string, fs::file_time_type> times;
+    std::error_code ec;
+    for (auto it = fs::directory_iterator(bench, ec); !ec && it != fs::directory_iterator();
+         it.increment(ec)) {
+      const fs::file_time_type t = it->last_write_time(ec);
+      if (!ec && it->is_regular_file(ec)) times[it->path().filename().string()] = t;
+      ec.clear();
+    }
+    return times;
+  }
+
   fs::path dir_;
 };
 
@@ -205,34 +252,64 @@ TEST_F(BenchKillResumeTest, KilledAtRandomMomentsAndResumedLosesAndRepeatsNothin
   for (const nlohmann::json& r : completeRecords(reference, torn))
     expected[key(r)] = roomscout::experiment::withoutTimingFields(r);
   ASSERT_EQ(expected.size(), expectedKeys().size()) << log();
-  const double per_episode_s =
-      std::max(0.0, whole.seconds - report_only.seconds) / static_cast<double>(expected.size());
 
-  // Each kill lands at a random point of what the run has left to do: of the episodes not yet
-  // recorded while there are any, then of the report; so kills hit episodes, record and
-  // runs/ output writing, and the report's tables. Some come a few milliseconds after the start:
-  // the first before anything is written, others right after a previous kill. ROOMSCOUT_KILL_SEED
-  // picks other moments (for hunting a rare failure by hand).
+  // Each kill comes at an event of what the run has left to do, drawn at random: while
+  // episodes are left, the k-th record it writes or the k-th episode whose outputs appear;
+  // then the k-th file of the report. A few milliseconds after the event, so the kill lands
+  // anywhere in what follows it (the next episode, moving outputs, the next table). Some runs
+  // are killed a few milliseconds after they start, before anything is written.
+  // ROOMSCOUT_KILL_SEED picks other moments (for hunting a rare failure by hand).
   const char* seed_text = std::getenv("ROOMSCOUT_KILL_SEED");
   std::mt19937 rng(seed_text ? static_cast<unsigned>(std::stoul(seed_text)) : 44u);
-  std::uniform_real_distribution<double> fraction(0.0, 1.0);
+  std::uniform_real_distribution<double> after_event(0.0, 0.02);
   std::uniform_real_distribution<double> at_once(0.001, 0.03);
   const std::vector<bool> quick = {true, false, false, true, false, false, false, true};
   const fs::path bench = dir_ / "bench";
   int kills = 0;
   for (std::size_t i = 0; i < quick.size(); ++i) {
-    bool torn_before = false;
-    const std::size_t left =
-        expected.size() -
-        (fs::exists(bench / "results.jsonl") ? completeRecords(bench, torn_before).size() : 0);
-    double delay = at_once(rng);
-    if (!quick[i]) {
-      delay = left > 0 ? fraction(rng) * static_cast<double>(left) * per_episode_s
-                       : fraction(rng) * report_only.seconds;
+    const Snapshot before = snapshot(bench);
+    const std::size_t left = expected.size() - std::min(expected.size(), before.records);
+    // Quick kills: a few milliseconds after the start, before the run has written anything.
+    const double soon_s = at_once(rng);
+    std::function<bool()> event = [start = Clock::now(), soon_s] {
+      return std::chrono::duration<double>(Clock::now() - start).count() >= soon_s;
+    };
+    std::string what = "at once";
+    if (!quick[i] && left > 0) {
+      const std::size_t k = std::uniform_int_distribution<std::size_t>(1, left)(rng);
+      if (std::uniform_int_distribution<int>(0, 1)(rng) == 0) {
+        what = "record " + std::to_string(k) + " of " + std::to_string(left);
+        event = [&bench, k, n = before.records] { return snapshot(bench).records >= n + k; };
+      } else {
+        // A scratch folder may come and go between two polls: the episode's record, written
+        // after its outputs, fires the event then.
+        what = "episode outputs " + std::to_string(k) + " of " + std::to_string(left);
+        auto seen = std::make_shared<std::set<std::string>>();
+        event = [&bench, k, seen, before] {
+          const Snapshot now = snapshot(bench);
+          for (const std::string& d : now.episode_dirs)
+            if (!before.episode_dirs.count(d)) seen->insert(d);
+          return seen->size() >= k || now.records >= before.records + k;
+        };
+      }
+    } else if (!quick[i]) {
+      const std::size_t k = std::uniform_int_distribution<std::size_t>(1, 3)(rng);
+      what = "report file " + std::to_string(k);
+      // The report rewrites its files: a file is written once its time differs from before.
+      const std::map<std::string, fs::file_time_type> old_times = topFileTimes(bench);
+      event = [&bench, k, old_times] {
+        std::size_t written = 0;
+        for (const auto& [name, time] : topFileTimes(bench)) {
+          const auto old = old_times.find(name);
+          written += name != "results.jsonl" && (old == old_times.end() || old->second != time);
+        }
+        return written >= k;
+      };
     }
-    const Outcome o = run(benchArgs(bench), delay);
+    const double then_s = quick[i] ? 0.0 : after_event(rng);
+    const Outcome o = run(benchArgs(bench), event, then_s);
     const std::string when =
-        "run " + std::to_string(i + 1) + ", kill at " + std::to_string(delay) + " s";
+        "run " + std::to_string(i + 1) + ", kill " + what + " + " + std::to_string(then_s) + " s";
     bool torn_now = false;
     const std::size_t recorded =
         fs::exists(bench / "results.jsonl") ? completeRecords(bench, torn_now).size() : 0;
@@ -247,7 +324,7 @@ TEST_F(BenchKillResumeTest, KilledAtRandomMomentsAndResumedLosesAndRepeatsNothin
     expectConsistent(bench, when);
     if (HasFailure()) return;
   }
-  EXPECT_GE(kills, 6) << "most runs should have been killed; the delays are too long";
+  EXPECT_GE(kills, 6) << "most runs should have been killed: their events came after the end";
 
   // A report of what a killed bench left behind works (a torn last line is ignored).
   if (fs::exists(bench / "results.jsonl") && !completeRecords(bench, torn).empty()) {
@@ -303,7 +380,7 @@ TEST_F(BenchKillResumeTest, KilledBeforeWritingAnythingThenResumed) {
   const fs::path bench = dir_ / "early";
   // Killed at once, twice in a row: at most an empty folder or an empty results file.
   for (int i = 0; i < 2; ++i) {
-    const Outcome o = run(benchArgs(bench, 2), 0.002);
+    const Outcome o = run(benchArgs(bench, 2), [] { return true; });
     ASSERT_TRUE(o.killed || o.exit_code == 0) << log();
     expectConsistent(bench, "kill " + std::to_string(i + 1), 2);
   }

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <random>
+#include <set>
 #include <sstream>
 #include <string>
 
@@ -57,10 +58,18 @@ TEST_F(CliTest, ExploreMapServerWorldWritesEveryOutput) {
   const CommandResult r = run("explore --world " + map.string() +
                               " --method nearest_frontier --seed 3 --out " + out.string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  for (const char* f :
-       {"occupancy.pgm", "occupancy.yaml", "trajectory.csv", "metrics.json", "run.png"}) {
-    EXPECT_TRUE(fs::exists(out / f)) << f;
+  // Every output docs/cli.md lists, each with content, and nothing else (no temporary file
+  // of an atomic write left behind).
+  const std::set<std::string> documented = {
+      "occupancy.pgm",  "occupancy.yaml", "trajectory.csv",      "run.png",
+      "pointcloud.pcd", "pointcloud.png", "topology.json",       "topology.png",
+      "semantic.json",  "semantic.png",   "semantic_labels.png", "metrics.json"};
+  std::set<std::string> written;
+  for (const auto& entry : fs::directory_iterator(out)) {
+    written.insert(entry.path().filename().string());
+    EXPECT_GT(fs::file_size(entry.path()), 0u) << entry.path().filename();
   }
+  EXPECT_EQ(written, documented);
   std::ifstream in(out / "metrics.json");
   const nlohmann::json m = nlohmann::json::parse(in);
   for (const char* key :

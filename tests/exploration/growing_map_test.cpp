@@ -251,7 +251,13 @@ TEST_P(GrowingMapTest, GoesOnWhenTheResolutionChanges) {
   EXPECT_GT(run.goals, 5);
   EXPECT_EQ(run.goals_off_grid, 0) << "of " << run.goals;
   EXPECT_EQ(run.goals_lethal, 0) << "of " << run.goals;
-  EXPECT_GT(run.coverage, 0.3);
+  // Each change of resolution costs the strategy its per-cell state (laid on the new cells or
+  // reset), so some goals, but not the exploration: it covers most of what the same 40
+  // decisions cover at one resolution (measured: 0.78 to 1.12 times as much, every method).
+  auto same_strategy = createStrategy(GetParam(), 5);
+  const GrowingRun one_resolution = runOnGrowingMap(*same_strategy, 40);
+  EXPECT_GE(run.coverage, 0.7 * one_resolution.coverage)
+      << "one resolution: " << one_resolution.coverage;
 }
 
 INSTANTIATE_TEST_SUITE_P(Registered, GrowingMapTest, ::testing::ValuesIn(strategyNames()),

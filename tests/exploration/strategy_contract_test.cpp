@@ -15,7 +15,8 @@
 namespace roomscout {
 namespace {
 
-/// A strategy wrapper that checks every goal against the costmap it was decided on.
+/// A strategy wrapper that checks every goal against the costmap it was decided on. It forwards
+/// every virtual of ExplorationStrategy, so the suite runs the strategy's own code.
 class CheckedStrategy final : public ExplorationStrategy {
  public:
   explicit CheckedStrategy(std::unique_ptr<ExplorationStrategy> inner) : inner_(std::move(inner)) {}
@@ -33,6 +34,8 @@ class CheckedStrategy final : public ExplorationStrategy {
   }
   void onGoalReached(const Vec2& g) override { inner_->onGoalReached(g); }
   void onGoalFailed(const Vec2& g) override { inner_->onGoalFailed(g); }
+  void onGoalStalled(const Vec2& g) override { inner_->onGoalStalled(g); }
+  std::vector<Vec2> candidateGoals() const override { return inner_->candidateGoals(); }
   double replanPeriod_s() const override { return inner_->replanPeriod_s(); }
   bool readsRooms() const override { return inner_->readsRooms(); }
   std::vector<ParameterRef> parameters() override { return inner_->parameters(); }

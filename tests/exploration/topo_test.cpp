@@ -222,6 +222,13 @@ TEST(TopoExploration, KeepsItsGoalWhileDrivingAndReDecidesAtTheNextVertex) {
   ASSERT_EQ(same.status, Decision::Status::kGoal);
   EXPECT_EQ(same.goal_m, first.goal_m);
   EXPECT_EQ(topo.vertices().size(), 1u);
+  // 2.6 m on toward the goal, beyond the 2.5 m vertex spacing: a new vertex, and a decision
+  // made from it.
+  const Vec2 next_vertex = first.goal_m.x() < 5.0 ? Vec2(2.4, 3.0) : Vec2(7.6, 3.0);
+  const Decision redecided = decideAt(topo, grid, costmap, next_vertex, 1.0);
+  ASSERT_EQ(redecided.status, Decision::Status::kGoal);
+  ASSERT_EQ(topo.vertices().size(), 2u);
+  EXPECT_LT((topo.vertices()[1].position_m - next_vertex).norm(), 0.1);
 }
 
 TEST(TopoExploration, FullyKnownMapEndsAtOnce) {

@@ -209,14 +209,19 @@ TEST(Explorer, AGoalWithoutProgressFails) {
   options.goals.no_progress_timeout_s = 5.0;
   Explorer explorer(createStrategy("nearest_frontier", 1), options);
   const OccupancyGrid map = robot.sense();
-  // The robot never moves: after the timeout its goal fails and it is given another.
+  // The robot never moves: after the timeout its goal fails and it is given another. The
+  // watchdog measures at the call where the timeout has passed and fails the goal at the next
+  // one, so the first failure falls in (5 s, 5.5 s].
   int drives = 0;
+  double first_failure_s = -1.0;
   for (double t = 0.0; t < 7.0; t += 0.25) {
     drives +=
         explorer.update({map, robot.pose, t, CellRect{}}).kind == ExplorerCommand::Kind::kDrive;
+    if (first_failure_s < 0.0 && explorer.stats().goal_failures > 0) first_failure_s = t;
   }
   EXPECT_GE(drives, 20);
-  EXPECT_GE(explorer.stats().goal_failures, 1);
+  EXPECT_GT(first_failure_s, 5.0);
+  EXPECT_LE(first_failure_s, 5.5);
 }
 
 /// Always the same goal.
@@ -229,6 +234,77 @@ class FixedGoal final : public ExplorationStrategy {
  private:
   Vec2 goal_m_;
 };
+
+/// A map 10 x 4 m, unknown but for a free strip from x = 0.5 m to x = 0.5 m + `free_length_m`
+/// along y in [0.5, 1.5] m: its known free area is `free_length_m` square metres.
+OccupancyGrid stripMap(double free_length_m) {
+  OccupancyGrid grid(GridGeometry(Vec2::Zero(), 0.05, 200, 80));
+  const GridGeometry& g = grid.geometry();
+  for (int y = 10; y < 30; ++y) {
+    for (int x = 10; x < 10 + static_cast<int>(std::lround(free_length_m / 0.05)); ++x)
+      grid.setState(g.index(Cell{x, y}), CellState::kFree);
+  }
+  return grid;
+}
+
+/// Drives the stall watchdog for `duration_s` with a fixed goal the robot never reaches (the
+/// no-progress watchdog is out of the way): the map's free strip is `length_m(t)` long and the
+/// robot stands at `robot_at(t)`. Returns the times at which a goal stalled.
+template <class Length, class Position>
+std::vector<double> stallTimes(ExplorerOptions options, double duration_s, Length length_m,
+                               Position robot_at) {
+  options.goals.no_progress_timeout_s = 1000.0;
+  options.goals.stall_timeout_s = 10.0;
+  FixedGoal strategy(Vec2(1.5, 1.0));
+  Explorer explorer(strategy, options);
+  std::vector<double> stalls;
+  for (double t = 0.0; t <= duration_s + 1e-9; t += 0.25) {
+    const OccupancyGrid map = stripMap(length_m(t));
+    const Vec2 p = robot_at(t);
+    explorer.update({map, Pose2{p.x(), p.y(), 0.0}, t});
+    if (explorer.stats().stalls > static_cast<int>(stalls.size())) stalls.push_back(t);
+  }
+  return stalls;
+}
+
+TEST(Explorer, StallWatchdogFailsTheGoalOfARobotThatStaysAndSeesNothingNew) {
+  // Checked once a second over windows of stall_timeout_s (10 s) from the first call: the goal
+  // stalls at the end of each window, at 10 s and 20 s.
+  const auto still = [](double) { return Vec2(1.0, 1.0); };
+  const std::vector<double> stalls = stallTimes(
+      ExplorerOptions{}, 25.0, [](double) { return 3.0; }, still);
+  ASSERT_EQ(stalls.size(), 2u);
+  EXPECT_DOUBLE_EQ(stalls[0], 10.0);
+  EXPECT_DOUBLE_EQ(stalls[1], 20.0);
+  // The map loses free cells (noise blurring walls): still no growth, still stalled.
+  EXPECT_EQ(stallTimes(
+                ExplorerOptions{}, 25.0, [](double t) { return 6.0 - 0.1 * t; }, still)
+                .size(),
+            2u);
+}
+
+TEST(Explorer, StallWatchdogSparesARobotThatSeesNewSpaceOrTravels) {
+  const auto still = [](double) { return Vec2(1.0, 1.0); };
+  // 0.2 m^2 of new free space a second: 2 m^2 a window, more than stall_min_new_area_m2 (1).
+  EXPECT_TRUE(stallTimes(
+                  ExplorerOptions{}, 25.0, [](double t) { return 2.0 + 0.2 * t; }, still)
+                  .empty());
+  // Shuttling 2 m back and forth, farther than a 1 m stall radius, in a map that never grows.
+  ExplorerOptions small_radius;
+  small_radius.goals.stall_radius_m = 1.0;
+  const auto shuttle = [](double t) {
+    return Vec2(1.0 + 2.0 * std::abs(std::fmod(t, 8.0) - 4.0) / 4.0, 1.0);
+  };
+  EXPECT_TRUE(stallTimes(
+                  small_radius, 25.0, [](double) { return 3.0; }, shuttle)
+                  .empty());
+  // stall_min_new_area_m2: 0 never stalls, even in a map that loses free cells.
+  ExplorerOptions off;
+  off.goals.stall_min_new_area_m2 = 0.0;
+  EXPECT_TRUE(stallTimes(
+                  off, 25.0, [](double t) { return 6.0 - 0.1 * t; }, still)
+                  .empty());
+}
 
 TEST(Explorer, ProgressIsMeasuredAlongTheDriversPathWhenItReportsOne) {
   // The driver takes a detour: 1.5 m away from the goal first. Along the Explorer's own path

@@ -2,6 +2,8 @@
 // room ids as a grid, poses, and markers.
 
 #include <cmath>
+#include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -38,6 +40,49 @@ TEST(GridConversions, ClassifiesValuesAsMapServerDoes) {
   EXPECT_FALSE(r.changed.has_value()) << "no previous grid: any cell may have changed";
 }
 
+TEST(GridConversions, ProbabilitiesAsCartographerPublishesThem) {
+  OccupancyGrid grid(GridGeometry(Vec2::Zero(), 0.05, 3, 1));
+  grid.addHit(0);   // log-odds 1.6: p = 0.83
+  grid.addMiss(1);  // -0.41: p = 0.40
+  nav_msgs::OccupancyGrid msg;
+  toProbabilityMsg(grid, msg);
+  EXPECT_EQ(msg.data, (std::vector<std::int8_t>{83, 40, -1}));
+  // Read with Cartographer's convention, the cells are what the grid says; map_server's
+  // thresholds leave the cell seen free once unknown.
+  const ReceivedGrid cartographer = fromMsg(msg, nullptr, MapConvention::named("cartographer"));
+  EXPECT_EQ(cartographer.grid.state(std::size_t{0}), CellState::kOccupied);
+  EXPECT_EQ(cartographer.grid.state(std::size_t{1}), CellState::kFree);
+  EXPECT_EQ(cartographer.grid.state(std::size_t{2}), CellState::kUnknown);
+  EXPECT_EQ(fromMsg(msg).grid.state(std::size_t{1}), CellState::kUnknown);
+}
+
+TEST(GridConversions, EachMapSourceReadsItsOwnConvention) {
+  const std::vector<std::int8_t> values = {-1, 0, 19, 40, 49, 50, 55, 65, 99, 100};
+  const auto states = [&](const std::string& source) {
+    const ReceivedGrid r = fromMsg(message(10, 1, values), nullptr, MapConvention::named(source));
+    std::string text;
+    for (std::size_t i = 0; i < values.size(); ++i)
+      text += "?fo"[static_cast<int>(r.grid.state(i))];
+    return text;
+  };
+  // Cartographer's probabilities: a cell seen free a few times (in the forties) is free, one
+  // hit once (55) occupied; map_server's thresholds leave the forties unknown.
+  EXPECT_EQ(states("map_server"), "?ff????ooo");
+  EXPECT_EQ(states("cartographer"), "?ffff?oooo");
+  EXPECT_EQ(states("slam_toolbox"), "?ffffooooo");
+  EXPECT_EQ(states("gmapping"), states("slam_toolbox"));
+  EXPECT_EQ(states("costmap"), "?ffffffffo");
+  try {
+    MapConvention::named("hector");
+    FAIL() << "an unknown source was accepted";
+  } catch (const OptionError& e) {
+    EXPECT_NE(std::string(e.what()).find("cartographer"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW((MapConvention{50.0, 50.0}.validate()), OptionError);
+  EXPECT_THROW((MapConvention{-1.0, 50.0}.validate()), OptionError);
+  EXPECT_NO_THROW(MapConvention::named("cartographer").validate());
+}
+
 TEST(GridConversions, ReportsTheCellsThatChanged) {
   const ReceivedGrid a = fromMsg(message(4, 3, std::vector<std::int8_t>(12, -1)));
   std::vector<std::int8_t> data(12, -1);
@@ -67,6 +112,9 @@ TEST(GridConversions, RejectsMapsItCannotUse) {
   zero.info.resolution = 0.0f;
   EXPECT_THROW(fromMsg(zero), InvalidArgument);
   EXPECT_THROW(fromMsg(message(0, 0, {})), InvalidArgument);
+  nav_msgs::OccupancyGrid nan_origin = message(2, 2, {0, 0, 0, 0});
+  nan_origin.info.origin.position.x = std::nan("");
+  EXPECT_THROW(fromMsg(nan_origin), InvalidArgument);
 }
 
 TEST(GridConversions, GridRoundTripsThroughAMessage) {

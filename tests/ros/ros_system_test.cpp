@@ -3,8 +3,10 @@
 // master on a free port and stops every process it started, whatever happens.
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -12,6 +14,7 @@
 #include <gtest/gtest.h>
 #include <nav_msgs/OccupancyGrid.h>
 #include <sensor_msgs/LaserScan.h>
+#include <std_msgs/Bool.h>
 #include <std_msgs/String.h>
 #include <std_srvs/Trigger.h>
 #include <visualization_msgs/MarkerArray.h>
@@ -98,7 +101,7 @@ TEST(RosSystem, SemanticExploresSmallHouseOverRosAsInProcess) {
   const auto wall_start = std::chrono::steady_clock::now();
   auto sim = master.node(simNode(), "sim",
                          {"_world:=small_house", "_seed:=1", "_sync_topic:=/explore/cycle",
-                          "_points:=true", "_config:=" + options.string()});
+                          "_sync_timeout_s:=0", "_points:=true", "_config:=" + options.string()});
   auto explore = master.node(exploreNode(), "explore",
                              {"_method:=semantic", "_seed:=1", "_save_dir:=" + maps.string(),
                               "_config:=" + robot_options.string()});
@@ -115,16 +118,17 @@ TEST(RosSystem, SemanticExploresSmallHouseOverRosAsInProcess) {
   const nlohmann::json& truth = *sim_status.last();
   EXPECT_GE(truth["rate"].get<double>(), 0.98);
   ASSERT_FALSE(truth["t98_s"].is_null());
-  // The round trip over ROS (lockstep) explores as the in-process episode does. The runs are
-  // not identical: the nodes' messages may arrive a step apart, and a run diverges from there
-  // (within 3 % on seeds 1-3 on a quiet machine, up to 17 % with other tests running beside
-  // it; scripts/ros_vs_inprocess.sh measures it). Without the lockstep the gap is 33-50 %:
-  // this bound catches that, not the 10 % target.
+  // The round trip over ROS explores as the in-process episode does. The lockstep waits for
+  // the explorer at every step however long it takes (~sync_timeout_s 0), so the machine's
+  // load cannot break it. The runs are still not identical: a goal and the explorer's report
+  // that it caught up travel on different connections, so a new goal may start a step late,
+  // and a run diverges from there (scripts/ros_vs_inprocess.sh measures it). Without the
+  // lockstep the gap is 33-50 %.
   const double t98 = truth["t98_s"].get<double>(), l98 = truth["l98_m"].get<double>();
   std::printf("in-process: T98 %.1f s, L98 %.1f m; over ROS: T98 %.1f s, L98 %.1f m, wall %.1f s\n",
               *reference.t98_s, *reference.l98_m, t98, l98, wall_s);
-  EXPECT_NEAR(t98, *reference.t98_s, 0.3 * *reference.t98_s);
-  EXPECT_NEAR(l98, *reference.l98_m, 0.3 * *reference.l98_m);
+  EXPECT_NEAR(t98, *reference.t98_s, 0.1 * *reference.t98_s);
+  EXPECT_NEAR(l98, *reference.l98_m, 0.1 * *reference.l98_m);
   for (const char* file :
        {"occupancy.pgm", "occupancy.yaml", "pointcloud.pcd", "topology.json", "topology.png",
         "semantic.json", "semantic.png", "semantic_labels.png"}) {
@@ -158,7 +162,7 @@ TEST(RosSystem, GoalsAbortedNearOneSpotAreGivenUp) {
   // enough that some goal of the run falls in it whatever the timing of the two nodes).
   auto sim = master.node(simNode(), "sim",
                          {"_world:=small_house", "_seed:=2", "_sync_topic:=/explore/cycle",
-                          "_abort_goals_near:=[4.0, 4.0, 1.6]"});
+                          "_sync_timeout_s:=0", "_abort_goals_near:=[4.0, 4.0, 1.6]"});
   auto explore =
       master.node(exploreNode(), "explore", {"_method:=nearest_frontier", "_save_dir:="});
   const bool done = spinUntil([&] { return explore_status.is("done", true); }, seconds(400),
@@ -171,7 +175,9 @@ TEST(RosSystem, GoalsAbortedNearOneSpotAreGivenUp) {
   EXPECT_GE((*sim_status.last())["goals_aborted"].get<int>(), 1)
       << "no goal came near the spot: move it";
   EXPECT_GE((*explore_status.last())["goal_failures"].get<int>(), 1);
-  EXPECT_GE((*sim_status.last())["rate"].get<double>(), 0.9);
+  // The refused spot lies in an open room the laser sees from outside the refused disc, so
+  // giving its goals up costs nothing of the map: the run still reaches 98 % (0.999 measured).
+  EXPECT_GE((*sim_status.last())["rate"].get<double>(), 0.98);
 }
 
 TEST(RosSystem, StoppingTheExplorerCancelsItsGoal) {
@@ -225,6 +231,162 @@ TEST(RosSystem, SimNodeHonoursTheConfigsNoiseAndMapMode) {
   EXPECT_EQ(sim->stop(), 0) << sim->output();
 }
 
+/// Calls the Trigger service `name`; returns its message after checking it succeeded.
+std::string trigger(const std::string& name) {
+  std_srvs::Trigger call;
+  EXPECT_TRUE(ros::service::waitForService(name, ros::Duration(30.0))) << name;
+  EXPECT_TRUE(ros::service::call(name, call)) << name;
+  EXPECT_TRUE(call.response.success) << name << ": " << call.response.message;
+  return call.response.message;
+}
+
+TEST(RosSystem, PauseResumeStopAndStartAgain) {
+  RosMaster master;
+  master.initClient("ros_pause_test");
+  ros::NodeHandle nh;
+  ros::param::set("/use_sim_time", true);
+  StatusListener sim_status("/sim/status"), explore_status("/explore/status");
+  ros::Publisher resume = nh.advertise<std_msgs::Bool>("/explore/resume", 1, true);
+  auto sim = master.node(
+      simNode(), "sim",
+      {"_world:=small_house", "_seed:=1", "_sync_topic:=/explore/cycle", "_sync_timeout_s:=0"});
+  // Not started: no goal until asked.
+  auto explore = master.node(exploreNode(), "explore",
+                             {"_method:=nearest_frontier", "_save_dir:=", "_autostart:=false"});
+  auto dead = [&] { return !sim->poll() || !explore->poll(); };
+  auto field = [&](const char* key) {
+    return sim_status.last() ? (*sim_status.last())[key].get<int>() : 0;
+  };
+  auto mode = [&] {
+    return explore_status.last() ? (*explore_status.last())["mode"].get<std::string>() : "";
+  };
+  auto simTime = [&] {
+    return sim_status.last() ? (*sim_status.last())["time_s"].get<double>() : 0;
+  };
+  ASSERT_TRUE(spinUntil([&] { return simTime() > 5.0; }, seconds(60), dead)) << sim->output();
+  EXPECT_EQ(field("goals_received"), 0) << "a goal before ~start";
+  EXPECT_EQ(trigger("/explore/start"), "exploring");
+  ASSERT_TRUE(spinUntil([&] { return field("goals_received") >= 3; }, seconds(120), dead))
+      << explore->output();
+
+  // Paused: the active goal is cancelled at once, and none follows while simulated time runs.
+  resume.publish([] {
+    std_msgs::Bool b;
+    b.data = false;
+    return b;
+  }());
+  ASSERT_TRUE(spinUntil([&] { return mode() == "paused"; }, seconds(30), dead));
+  const int received = field("goals_received");
+  const double paused_at = simTime();
+  ASSERT_TRUE(spinUntil([&] { return simTime() > paused_at + 20.0; }, seconds(120), dead));
+  EXPECT_EQ(field("goals_received"), received) << "a goal was sent while paused";
+  EXPECT_GE(field("goals_canceled"), 1);
+  resume.publish([] {
+    std_msgs::Bool b;
+    b.data = true;
+    return b;
+  }());
+  ASSERT_TRUE(spinUntil([&] { return field("goals_received") > received; }, seconds(60), dead))
+      << "no goal after resuming";
+
+  // Stopped, then started again on the map so far: a new exploration that ends with the house
+  // mapped.
+  EXPECT_EQ(trigger("/explore/stop"), "stopped");
+  EXPECT_EQ(trigger("/explore/start"), "exploring");
+  ASSERT_TRUE(spinUntil([&] { return explore_status.is("done", true); }, seconds(400), dead))
+      << explore->output();
+  spinUntil([&] { return false; }, seconds(2));
+  EXPECT_GE((*sim_status.last())["rate"].get<double>(), 0.98);
+  EXPECT_EQ(mode(), "done");
+  EXPECT_EQ(explore->stop(), 0) << explore->output();
+  EXPECT_EQ(sim->stop(), 0) << sim->output();
+}
+
+TEST(RosSystem, ReturnsToTheStartThenSavesTheMaps) {
+  RosMaster master;
+  master.initClient("ros_return_test");
+  ros::param::set("/use_sim_time", true);
+  StatusListener sim_status("/sim/status"), explore_status("/explore/status");
+  const std::filesystem::path maps = master.dir() / "maps";
+  auto sim = master.node(
+      simNode(), "sim",
+      {"_world:=small_house", "_seed:=1", "_sync_topic:=/explore/cycle", "_sync_timeout_s:=0"});
+  auto explore = master.node(
+      exploreNode(), "explore",
+      {"_method:=nearest_frontier", "_save_dir:=" + maps.string(), "_return_to_start:=true"});
+  auto dead = [&] { return !sim->poll() || !explore->poll(); };
+  ASSERT_TRUE(spinUntil([&] { return sim_status.last().has_value(); }, seconds(60), dead));
+  const auto start = (*sim_status.last())["pose"];
+  bool returning = false;
+  ASSERT_TRUE(spinUntil(
+      [&] {
+        returning =
+            returning || (explore_status.last() && (*explore_status.last())["mode"] == "returning");
+        return explore_status.is("done", true);
+      },
+      seconds(400), dead))
+      << explore->output();
+  spinUntil([&] { return false; }, seconds(2));
+  EXPECT_TRUE(returning) << "never reported returning";
+  const auto end = (*sim_status.last())["pose"];
+  const double dx = end[0].get<double>() - start[0].get<double>();
+  const double dy = end[1].get<double>() - start[1].get<double>();
+  EXPECT_LT(std::hypot(dx, dy), 0.5) << "ended at " << end << ", started at " << start;
+  EXPECT_GE((*sim_status.last())["rate"].get<double>(), 0.98);
+  for (const char* file : {"occupancy.pgm", "semantic.json", "topology.json"})
+    EXPECT_TRUE(std::filesystem::exists(maps / file)) << file;
+  EXPECT_EQ(explore->stop(), 0) << explore->output();
+  EXPECT_EQ(sim->stop(), 0) << sim->output();
+}
+
+TEST(RosSystem, CartographersMapConventionExploresAsMapServers) {
+  // The sim node publishes its map as Cartographer does (occupancy probabilities x 100) and the
+  // explorer reads it with the thresholds a Cartographer user sets (~map_source); then the same
+  // run in map_server's convention (0 / 100 / -1). Both reach 98 %, within 10 % of each other's
+  // T98. Cartographer's thresholds call cells known after one weak observation, which
+  // map_server's do not, so the maps, and the runs, differ a little.
+  RosMaster master;
+  master.initClient("ros_cartographer_test");
+  ros::param::set("/use_sim_time", true);
+  const std::filesystem::path robot_options = master.dir() / "robot.yaml";
+  {
+    sim::EpisodeConfig config;
+    const sim::WorldModel model(sim::loadWorld("small_house", std::nullopt), config.world);
+    std::FILE* f = std::fopen(robot_options.c_str(), "w");
+    std::fprintf(f, "explorer:\n  stall_min_new_area_m2: %.17g\n",
+                 sim::explorerOptionsFor(model, config).goals.stall_min_new_area_m2);
+    std::fclose(f);
+  }
+  auto t98In = [&](const std::string& source) {
+    StatusListener sim_status("/" + source + "_sim/status"),
+        explore_status("/" + source + "_explore/status");
+    auto sim = master.node(
+        simNode(), source + "_sim",
+        {"_world:=small_house", "_seed:=1", "_sync_topic:=/" + source + "_explore/cycle",
+         "_sync_timeout_s:=0", "_map_source:=" + source});
+    auto explore =
+        master.node(exploreNode(), source + "_explore",
+                    {"_method:=semantic", "_seed:=1", "_save_dir:=", "_map_source:=" + source,
+                     "_config:=" + robot_options.string()});
+    const bool done = spinUntil([&] { return explore_status.is("done", true); }, seconds(400),
+                                [&] { return !sim->poll() && !explore->poll(); });
+    EXPECT_TRUE(done) << source << "\n" << explore->output();
+    spinUntil([&] { return false; }, seconds(2));
+    const nlohmann::json truth = sim_status.last().value_or(nlohmann::json::object());
+    EXPECT_GE(truth.value("rate", 0.0), 0.98) << source;
+    EXPECT_EQ(explore->stop(), 0) << explore->output();
+    EXPECT_EQ(sim->stop(), 0) << sim->output();
+    return truth.contains("t98_s") && truth["t98_s"].is_number() ? truth["t98_s"].get<double>()
+                                                                 : -1.0;
+  };
+  const double cartographer = t98In("cartographer");
+  const double map_server = t98In("map_server");
+  std::printf("T98 over ROS: %.1f s in Cartographer's convention, %.1f s in map_server's\n",
+              cartographer, map_server);
+  ASSERT_GT(map_server, 0.0);
+  EXPECT_NEAR(cartographer, map_server, 0.1 * map_server);
+}
+
 /// Runs a node that must refuse to start; returns its output after checking it exited with 1.
 /// Each gets a name of its own: `_name:=value` arguments stay on the parameter server.
 std::string refusedStart(const RosMaster& master, const std::string& binary,
@@ -252,6 +414,14 @@ TEST(RosSystem, NodesRefuseBadParametersWithAClearMessage) {
   EXPECT_NE(out.find(bad.string() + ": costmap.inflation_margin_m"), std::string::npos) << out;
   EXPECT_NE(refusedStart(master, simNode(), {"_world:=no_such_world"}).find("no_such_world"),
             std::string::npos);
+  // An unknown map source: the known ones listed.
+  const std::string source = refusedStart(master, exploreNode(), {"_map_source:=hector"});
+  EXPECT_NE(source.find("hector"), std::string::npos) << source;
+  EXPECT_NE(source.find("cartographer"), std::string::npos) << source;
+  EXPECT_NE(refusedStart(master, exploreNode(), {"_free_threshold:=70.0"}).find("free_threshold"),
+            std::string::npos);
+  EXPECT_NE(refusedStart(master, simNode(), {"_map_source:=costmap"}).find("costmap"),
+            std::string::npos);
   // A parameter of the wrong type is refused, not replaced by its default.
   EXPECT_NE(refusedStart(master, exploreNode(), {"_seed:=abc"}).find("~seed must be an integer"),
             std::string::npos);
@@ -266,6 +436,21 @@ std::string commandOutput(const std::string& command) {
     ::pclose(pipe);
   }
   return out;
+}
+
+TEST(RosSystem, SimExploreLaunchEndsByItselfOnceExplorationIsDone) {
+  RosMaster master;
+  std::map<std::string, std::string> env = master.env();
+  env["ROS_PACKAGE_PATH"] = std::filesystem::path(ROOMSCOUT_ROS_PACKAGE_DIR).parent_path().string();
+  const std::filesystem::path maps = master.dir() / "maps";
+  ChildProcess launch(
+      {"/usr/bin/roslaunch", "roomscout", "sim_explore.launch", "world:=small_house",
+       "method:=nearest_frontier", "points:=false", "save_dir:=" + maps.string()},
+      env, master.dir() / "roslaunch.log");
+  const std::optional<int> status = launch.wait(seconds(600));
+  ASSERT_TRUE(status.has_value()) << "the launch did not end\n" << launch.output();
+  EXPECT_EQ(*status, 0) << launch.output();
+  EXPECT_TRUE(std::filesystem::exists(maps / "occupancy.pgm")) << launch.output();
 }
 
 TEST(RosSystem, LaunchFileStartsBothNodesFromThePackageFolder) {

@@ -69,7 +69,10 @@ TEST_P(EveryMethodExploresTheHouses, ReachesAtLeast98PercentAndEnds) {
   EXPECT_LE(*r.revisits98, r.revisits);
   // rrt does not end by itself on every seed of the medium house: its end test counts frontier
   // cells neither of its detectors sends the robot to (docs/methods.md).
-  if (world_name == "medium_house" && method == "rrt") return;
+  if (world_name == "medium_house" && method == "rrt" && r.timed_out) {
+    GTEST_SKIP() << "rrt may run to the time limit in the medium house: its end test counts "
+                    "frontier cells neither of its detectors sends the robot to";
+  }
   EXPECT_FALSE(r.timed_out) << "ended only by the time limit " << r.max_time_s << " s";
 }
 

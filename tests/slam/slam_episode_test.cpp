@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -38,21 +39,29 @@ TEST(SlamEpisode, IcpWithoutNoiseTracksTheTruthWithinACellOrTwo) {
   EXPECT_EQ(r.slam_update.count, r.trajectory.size());
 }
 
-// Realistic TurtleBot3 noise with ICP-SLAM: both methods still map most of the house and end
-// by themselves, though drift keeps the honest rate below the 98 % the noise-free runs reach.
-class NoisySlamEpisode : public ::testing::TestWithParam<std::string> {};
+// Realistic TurtleBot3 noise with ICP-SLAM, on seeds 1-3: both methods map the house and end
+// by themselves without diverging. The bounds hold on every seed measured, 1-6 (rate 0.947 to
+// 0.992, ATE 0.11 to 0.36 m), with room to spare: ICP has no loop closure, so its drift, and
+// with it the share of the map that lies where the walls are, varies from seed to seed.
+class NoisySlamEpisode : public ::testing::TestWithParam<std::tuple<std::string, std::uint64_t>> {};
 
-TEST_P(NoisySlamEpisode, Tb3NoiseWithIcpExploresMostOfTheSmallHouse) {
-  const EpisodeResult r = exploreSmallHouse(GetParam(), "tb3", "icp", 2);
+TEST_P(NoisySlamEpisode, Tb3NoiseWithIcpExploresTheSmallHouseAndEnds) {
+  const auto& [method, seed] = GetParam();
+  const EpisodeResult r = exploreSmallHouse(method, "tb3", "icp", seed);
   ASSERT_TRUE(r.slam.has_value());
-  EXPECT_GE(r.exploration_rate, 0.85);
+  EXPECT_GE(r.exploration_rate, 0.93);
   EXPECT_TRUE(r.t_done_s.has_value());
-  EXPECT_LT(r.slam->error.rmse_m, 0.3);
+  EXPECT_LT(r.slam->error.rmse_m, 0.5);
   EXPECT_FALSE(r.slam->diverged);
 }
 
-INSTANTIATE_TEST_SUITE_P(Methods, NoisySlamEpisode,
-                         ::testing::Values("nearest_frontier", "semantic"));
+INSTANTIATE_TEST_SUITE_P(MethodsAndSeeds, NoisySlamEpisode,
+                         ::testing::Combine(::testing::Values("nearest_frontier", "semantic"),
+                                            ::testing::Values(1u, 2u, 3u)),
+                         [](const auto& info) {
+                           return std::get<0>(info.param) + "_seed" +
+                                  std::to_string(std::get<1>(info.param));
+                         });
 
 // Every method explores the small house under the TurtleBot3's noise to 98 % and declares the
 // end itself: with the true pose, and with the graph SLAM's pose and map.

@@ -25,10 +25,49 @@ double decimalOf(float value) {
 
 }  // namespace
 
+MapConvention MapConvention::named(const std::string& source) {
+  // map_server: its free_thresh and occupied_thresh defaults (map_server's YAML).
+  if (source == "map_server") return {19.6, 65.0};
+  // Cartographer publishes each cell's probability of being occupied x 100; a cell seen free
+  // once holds its miss probability 0.49, one hit once its hit probability 0.55
+  // (trajectory_builder_2d's defaults), and -1 only where nothing was seen.
+  if (source == "cartographer") return {49.0, 55.0};
+  // slam_toolbox (Karto's grid) and gmapping publish 0, 100 and -1 only: the split at 50 reads
+  // them exactly and tolerates a grid that was averaged or scaled.
+  if (source == "slam_toolbox" || source == "gmapping") return {49.0, 50.0};
+  // A costmap_2d costmap: 100 lethal, 99 inscribed (within the robot's radius of a wall, so
+  // free floor), 1-98 the inflation's fall-off, 0 free. As costmap_2d's static layer reads a map
+  // (trinary_costmap, lethal_cost_threshold 100), everything below lethal is free.
+  if (source == "costmap") return {99.0, 100.0};
+  std::string known;
+  for (const std::string& n : names()) known += (known.empty() ? "" : ", ") + n;
+  throw OptionError("~map_source: unknown source '" + source + "' (known: " + known + ")");
+}
+
+std::vector<std::string> MapConvention::names() {
+  return {"map_server", "cartographer", "slam_toolbox", "gmapping", "costmap"};
+}
+
+void MapConvention::validate() const {
+  if (!(std::isfinite(free_max) && std::isfinite(occupied_min) && free_max >= 0.0 &&
+        free_max < occupied_min && occupied_min <= 100.0)) {
+    throw OptionError(
+        "~free_threshold and ~occupied_threshold must satisfy 0 <= free < "
+        "occupied <= 100, not " +
+        std::to_string(free_max) + " and " + std::to_string(occupied_min));
+  }
+}
+
 ReceivedGrid fromMsg(const nav_msgs::OccupancyGrid& msg, const OccupancyGrid* previous,
-                     int occupied_percent, int free_percent) {
+                     const MapConvention& convention) {
   const auto& info = msg.info;
   const auto& q = info.origin.orientation;
+  const auto& o = info.origin.position;
+  if (!(std::isfinite(o.x) && std::isfinite(o.y) && std::isfinite(o.z) && std::isfinite(q.x) &&
+        std::isfinite(q.y) && std::isfinite(q.z) && std::isfinite(q.w))) {
+    throw InvalidArgument("map message: the origin is not finite (" + std::to_string(o.x) + ", " +
+                          std::to_string(o.y) + ")");
+  }
   if (!(std::isfinite(info.resolution) && info.resolution > 0.0f)) {
     throw InvalidArgument("map message: resolution " + std::to_string(info.resolution) +
                           " is not > 0");
@@ -53,9 +92,9 @@ ReceivedGrid fromMsg(const nav_msgs::OccupancyGrid& msg, const OccupancyGrid* pr
   for (std::size_t i = 0; i < n; ++i) {
     const int v = msg.data[i];
     if (v < 0) continue;  // unknown, as constructed
-    if (v >= occupied_percent) {
+    if (v >= convention.occupied_min) {
       out.grid.setState(i, CellState::kOccupied);
-    } else if (v <= free_percent) {
+    } else if (v <= convention.free_max) {
       out.grid.setState(i, CellState::kFree);
     }
   }
@@ -86,6 +125,17 @@ void toMsg(const OccupancyGrid& grid, nav_msgs::OccupancyGrid& msg) {
   static constexpr std::int8_t kValue[3] = {-1, 0, 100};  // by CellState
   const std::uint8_t* states = grid.stateBytes();
   for (std::size_t i = 0; i < n; ++i) msg.data[i] = kValue[states[i]];
+}
+
+void toProbabilityMsg(const OccupancyGrid& grid, nav_msgs::OccupancyGrid& msg) {
+  toMsg(grid, msg);
+  const std::size_t n = msg.data.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const float l = grid.logOdds(i);
+    if (l == 0.0f) continue;  // never observed: as toMsg has it
+    const double p = 1.0 / (1.0 + std::exp(-static_cast<double>(l)));
+    msg.data[i] = static_cast<std::int8_t>(std::lround(100.0 * p));
+  }
 }
 
 void labelsToMsg(const cv::Mat& labels, const GridGeometry& geometry,

@@ -4,6 +4,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <geometry_msgs/Pose.h>
 #include <geometry_msgs/Transform.h>
@@ -23,17 +24,34 @@ struct ReceivedGrid {
   std::optional<CellRect> changed;
 };
 
-/// Reads a map message as map_server classifies an image: -1 unknown, a value of at least
-/// `occupied_percent` occupied, at most `free_percent` free, anything between unknown. The
-/// float resolution is read as the decimal it was written from (0.05f as 0.05).
-/// `previous` (may be null) is the grid of the last message, for the changed cells.
-/// Throws InvalidArgument naming the problem for a map the library cannot use: a rotated
-/// origin, a resolution <= 0 or not finite, a data size that is not width x height.
+/// How a map's cell values (0-100, -1 unknown) read as free and occupied: a value at or below
+/// `free_max` is free, at or above `occupied_min` occupied, anything between unknown.
+struct MapConvention {
+  double free_max = 19.6;      ///< map_server's free_thresh 0.196
+  double occupied_min = 65.0;  ///< map_server's occupied_thresh 0.65
+
+  /// The convention of the package that publishes the map, by name (names()); throws
+  /// OptionError listing the known names for another. Sources in docs/ros.md.
+  static MapConvention named(const std::string& source);
+  static std::vector<std::string> names();
+  /// Throws OptionError unless 0 <= free_max < occupied_min <= 100.
+  void validate() const;
+};
+
+/// Reads a map message by `convention`. The float resolution is read as the decimal it was
+/// written from (0.05f as 0.05). `previous` (may be null) is the grid of the last message, for
+/// the changed cells. Throws InvalidArgument naming the problem for a map the library cannot
+/// use: a rotated origin, an origin or a resolution that is not finite, a resolution <= 0, a
+/// data size that is not width x height.
 ReceivedGrid fromMsg(const nav_msgs::OccupancyGrid& msg, const OccupancyGrid* previous = nullptr,
-                     int occupied_percent = 65, int free_percent = 19);
+                     const MapConvention& convention = {});
 
 /// The grid as a map message (free 0, occupied 100, unknown -1), header left to the caller.
 void toMsg(const OccupancyGrid& grid, nav_msgs::OccupancyGrid& msg);
+
+/// The grid as Cartographer publishes its map: each observed cell's probability of being
+/// occupied x 100 (from its log-odds, rounded), -1 where nothing was observed (log-odds 0).
+void toProbabilityMsg(const OccupancyGrid& grid, nav_msgs::OccupancyGrid& msg);
 
 /// A room-id image (CV_32S, row y = grid row y, 0 = no room) on `geometry` as a map message:
 /// cell value = room id, ids above 100 wrap into 1..100 (rviz's "map" colour scheme shows

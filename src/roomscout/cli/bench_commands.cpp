@@ -176,7 +176,7 @@ Subcommand addReportCommand(CLI::App& app) {
   auto args = std::make_shared<ReportArgs>();
   CLI::App* cmd = app.add_subcommand(
       "report",
-      "Tables I-III, figures and report.html from the results of one or more bench directories");
+      "Tables I-IV, figures and report.html from the results of one or more bench directories");
   cmd->add_option("dirs", args->inputs,
                   "bench directories (or results.jsonl files); records merged by key")
       ->required();

@@ -12,7 +12,7 @@ namespace roomscout::cli {
 /// then the report (tables, figures, report.html) into DIR.
 Subcommand addBenchCommand(CLI::App& app);
 
-/// `roomscout report DIR... [--out OUT] [--no-oracle]`: Tables I-III, figures and report.html
+/// `roomscout report DIR... [--out OUT] [--no-oracle]`: Tables I-IV, figures and report.html
 /// from the results of one or more bench directories (or results.jsonl files), merged by
 /// (world, method, seed).
 Subcommand addReportCommand(CLI::App& app);

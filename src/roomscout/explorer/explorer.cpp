@@ -198,17 +198,23 @@ void Explorer::stallWatchdog(const OccupancyGrid& grid, const Vec2& robot, doubl
   // A strategy that flips between goals without seeing anything new, while the robot dithers
   // in one place, is stalled: its current goal fails (explore_lite's own watchdog only
   // catches a goal that stays the same).
+  // An area threshold of 0 turns the watchdog off: a map that loses free cells under noise
+  // would otherwise count as growing by less than 0.
+  if (options_.goals.stall_min_new_area_m2 <= 0.0) return;
   if (t < next_watchdog_s_ - 1e-9) return;
   next_watchdog_s_ += kWatchdogPeriod_s;
+  const double cell_m2 = grid.geometry().resolution_m() * grid.geometry().resolution_m();
+  auto knownFree_m2 = [&] { return static_cast<double>(freeCells(grid)) * cell_m2; };
   if (!stall_window_started_) {
     stall_window_started_ = true;
+    stall_window_start_s_ = t;
+    stall_window_free_m2_ = knownFree_m2();
     stall_window_position_ = robot;
   }
   stall_window_excursion_m_ =
       std::max(stall_window_excursion_m_, (robot - stall_window_position_).norm());
   if (t - stall_window_start_s_ < options_.goals.stall_timeout_s) return;
-  const double cell_m2 = grid.geometry().resolution_m() * grid.geometry().resolution_m();
-  const double free_now_m2 = static_cast<double>(freeCells(grid)) * cell_m2;
+  const double free_now_m2 = knownFree_m2();
   if (goal_ && free_now_m2 - stall_window_free_m2_ < options_.goals.stall_min_new_area_m2 &&
       stall_window_excursion_m_ < options_.goals.stall_radius_m) {
     ++stats_.stalls;
