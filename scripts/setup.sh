@@ -18,7 +18,7 @@ packages=(
   clang libclang-rt-14-dev
   # ROS 1, for the nodes in ros/ and their tests (label "ros")
   libroscpp-dev libtf2-ros-dev libactionlib-dev libnav-msgs-dev libmove-base-msgs-dev
-  libvisualization-msgs-dev libsensor-msgs-dev libstd-srvs-dev python3-rosmaster catkin
+  libvisualization-msgs-dev libsensor-msgs-dev libstd-srvs-dev libmap-msgs-dev python3-rosmaster catkin
   python3-roslaunch python3-rostopic
 )
 # The browser tests open report pages in headless Chromium: a large package (about 120 MB

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include <actionlib/client/simple_action_client.h>
+#include <map_msgs/OccupancyGridUpdate.h>
 #include <move_base_msgs/MoveBaseAction.h>
 #include <nav_msgs/OccupancyGrid.h>
 #include <nav_msgs/Path.h>
@@ -32,6 +33,7 @@
 #include <tf2_ros/transform_listener.h>
 #include <visualization_msgs/MarkerArray.h>
 #include <Eigen/Geometry>
+#include <boost/make_shared.hpp>
 #include <nlohmann/json.hpp>
 
 #include "roomscout/core/errors.hpp"
@@ -133,6 +135,8 @@ class ExploreNode {
     ros::NodeHandle nh, pn("~");
     map_sub_ =
         nh.subscribe("map", 1, &ExploreNode::onMap, this, ros::TransportHints().tcpNoDelay());
+    map_updates_sub_ = nh.subscribe("map_updates", 10, &ExploreNode::onMapUpdate, this,
+                                    ros::TransportHints().tcpNoDelay());
     // roscpp reads /clock on a thread of its own; this subscription only wakes the loop below
     // at each tick, so that with a simulator's clock every cycle comes when due.
     clock_sub_ = nh.subscribe<rosgraph_msgs::Clock>(
@@ -211,6 +215,26 @@ class ExploreNode {
       return;
     }
     map_msg_ = msg;
+    map_new_ = true;
+    event_ = true;
+  }
+
+  /// A patch of the last map (map_updates): applied to a copy of it, which becomes the map.
+  void onMapUpdate(const map_msgs::OccupancyGridUpdate::ConstPtr& msg) {
+    if (!map_msg_) return;  // nothing to patch yet
+    if (!msg->header.frame_id.empty() && msg->header.frame_id != map_msg_->header.frame_id) {
+      ROS_ERROR_THROTTLE(10.0, "map update in frame '%s', the map in '%s': ignored",
+                         msg->header.frame_id.c_str(), map_msg_->header.frame_id.c_str());
+      return;
+    }
+    auto patched = boost::make_shared<nav_msgs::OccupancyGrid>(*map_msg_);
+    try {
+      applyUpdate(*patched, *msg);
+    } catch (const InvalidArgument& e) {
+      ROS_ERROR_THROTTLE(10.0, "%s: ignored", e.what());
+      return;
+    }
+    map_msg_ = patched;
     map_new_ = true;
     event_ = true;
   }
@@ -504,6 +528,10 @@ class ExploreNode {
   /// Publishes ~cycle: every cycle due by `now` is done. A simulator may wait for it
   /// (roomscout_sim_node's ~sync_topic) so that its clock never runs ahead of the decisions.
   void caughtUp(const ros::Time& now) {
+    // A goal sent in the cycle counts once move_base has taken it: the goal and this report
+    // travel on different connections, and a simulator that read the report first would step
+    // on without the goal.
+    if (goal_active_ && move_base_.getState() == actionlib::SimpleClientGoalState::PENDING) return;
     if (now <= caught_up_) return;
     caught_up_ = now;
     std_msgs::Time msg;
@@ -664,7 +692,7 @@ class ExploreNode {
   std::vector<Eigen::Vector3f> scratch_points_;
   double cloud_top_m_ = 0.0;
 
-  ros::Subscriber map_sub_, points_sub_, clock_sub_, plan_sub_, resume_sub_;
+  ros::Subscriber map_sub_, map_updates_sub_, points_sub_, clock_sub_, plan_sub_, resume_sub_;
   ros::Publisher rooms_pub_, room_grid_pub_, skeleton_pub_, frontier_pub_, goal_pub_, status_pub_,
       cycle_pub_;
   ros::ServiceServer save_srv_, start_srv_, pause_srv_, stop_srv_;

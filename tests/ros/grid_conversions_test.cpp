@@ -56,6 +56,31 @@ TEST(GridConversions, ProbabilitiesAsCartographerPublishesThem) {
   EXPECT_EQ(fromMsg(msg).grid.state(std::size_t{1}), CellState::kUnknown);
 }
 
+TEST(GridConversions, MapUpdatesPatchTheMapOrAreRefused) {
+  nav_msgs::OccupancyGrid map = message(4, 3, std::vector<std::int8_t>(12, -1));
+  map_msgs::OccupancyGridUpdate patch;
+  patch.x = 1;
+  patch.y = 1;
+  patch.width = 2;
+  patch.height = 2;
+  patch.data = {0, 100, 0, 0};
+  applyUpdate(map, patch);
+  EXPECT_EQ(map.data, (std::vector<std::int8_t>{-1, -1, -1, -1,  //
+                                                -1, 0, 100, -1,  //
+                                                -1, 0, 0, -1}));
+  const nav_msgs::OccupancyGrid before = map;
+  map_msgs::OccupancyGridUpdate outside = patch;
+  outside.x = 3;  // columns 3 and 4 of a 4-column map
+  EXPECT_THROW(applyUpdate(map, outside), InvalidArgument);
+  map_msgs::OccupancyGridUpdate negative = patch;
+  negative.y = -1;
+  EXPECT_THROW(applyUpdate(map, negative), InvalidArgument);
+  map_msgs::OccupancyGridUpdate short_data = patch;
+  short_data.data.pop_back();
+  EXPECT_THROW(applyUpdate(map, short_data), InvalidArgument);
+  EXPECT_EQ(map.data, before.data) << "a refused patch changed the map";
+}
+
 TEST(GridConversions, EachMapSourceReadsItsOwnConvention) {
   const std::vector<std::int8_t> values = {-1, 0, 19, 40, 49, 50, 55, 65, 99, 100};
   const auto states = [&](const std::string& source) {

@@ -348,11 +348,16 @@ TEST(RosSystem, CartographersMapConventionExploresAsMapServers) {
   RosMaster master;
   master.initClient("ros_cartographer_test");
   ros::param::set("/use_sim_time", true);
+  // The map grows as a SLAM package's does (episode.map_mode: growing).
+  const std::filesystem::path options = master.dir() / "options.yaml";
   const std::filesystem::path robot_options = master.dir() / "robot.yaml";
   {
+    std::FILE* f = std::fopen(options.c_str(), "w");
+    std::fprintf(f, "episode:\n  map_mode: growing\n");
+    std::fclose(f);
     sim::EpisodeConfig config;
     const sim::WorldModel model(sim::loadWorld("small_house", std::nullopt), config.world);
-    std::FILE* f = std::fopen(robot_options.c_str(), "w");
+    f = std::fopen(robot_options.c_str(), "w");
     std::fprintf(f, "explorer:\n  stall_min_new_area_m2: %.17g\n",
                  sim::explorerOptionsFor(model, config).goals.stall_min_new_area_m2);
     std::fclose(f);
@@ -363,7 +368,7 @@ TEST(RosSystem, CartographersMapConventionExploresAsMapServers) {
     auto sim = master.node(
         simNode(), source + "_sim",
         {"_world:=small_house", "_seed:=1", "_sync_topic:=/" + source + "_explore/cycle",
-         "_sync_timeout_s:=0", "_map_source:=" + source});
+         "_sync_timeout_s:=0", "_map_source:=" + source, "_config:=" + options.string()});
     auto explore =
         master.node(exploreNode(), source + "_explore",
                     {"_method:=semantic", "_seed:=1", "_save_dir:=", "_map_source:=" + source,

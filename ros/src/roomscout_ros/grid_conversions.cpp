@@ -1,5 +1,6 @@
 #include "roomscout_ros/grid_conversions.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
@@ -112,6 +113,31 @@ ReceivedGrid fromMsg(const nav_msgs::OccupancyGrid& msg, const OccupancyGrid* pr
     out.changed = changed;
   }
   return out;
+}
+
+void applyUpdate(nav_msgs::OccupancyGrid& map, const map_msgs::OccupancyGridUpdate& update) {
+  const std::uint64_t x = static_cast<std::uint32_t>(update.x);
+  const std::uint64_t y = static_cast<std::uint32_t>(update.y);
+  if (update.x < 0 || update.y < 0 || x + update.width > map.info.width ||
+      y + update.height > map.info.height) {
+    throw InvalidArgument("map update: the patch " + std::to_string(update.width) + " x " +
+                          std::to_string(update.height) + " at (" + std::to_string(update.x) +
+                          ", " + std::to_string(update.y) + ") lies outside the " +
+                          std::to_string(map.info.width) + " x " + std::to_string(map.info.height) +
+                          " map");
+  }
+  if (update.data.size() != static_cast<std::size_t>(update.width) * update.height) {
+    throw InvalidArgument("map update: " + std::to_string(update.data.size()) +
+                          " cells of data for a " + std::to_string(update.width) + " x " +
+                          std::to_string(update.height) + " patch");
+  }
+  if (map.data.size() != static_cast<std::size_t>(map.info.width) * map.info.height)
+    throw InvalidArgument("map update: the map it patches has the wrong data size");
+  for (std::uint32_t row = 0; row < update.height; ++row) {
+    const auto from = update.data.begin() + static_cast<std::ptrdiff_t>(row) * update.width;
+    std::copy(from, from + update.width,
+              map.data.begin() + static_cast<std::ptrdiff_t>((y + row) * map.info.width + x));
+  }
 }
 
 void toMsg(const OccupancyGrid& grid, nav_msgs::OccupancyGrid& msg) {

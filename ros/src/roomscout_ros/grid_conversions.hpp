@@ -8,6 +8,7 @@
 
 #include <geometry_msgs/Pose.h>
 #include <geometry_msgs/Transform.h>
+#include <map_msgs/OccupancyGridUpdate.h>
 #include <nav_msgs/OccupancyGrid.h>
 #include <opencv2/core/mat.hpp>
 
@@ -45,6 +46,11 @@ struct MapConvention {
 /// data size that is not width x height.
 ReceivedGrid fromMsg(const nav_msgs::OccupancyGrid& msg, const OccupancyGrid* previous = nullptr,
                      const MapConvention& convention = {});
+
+/// Writes `update` (a patch of cells, as costmap_2d and Cartographer's map publishers send on
+/// `map_updates`) into `map`. Throws InvalidArgument naming the problem, leaving `map` as it
+/// was, for a patch outside the map or whose data is not width x height.
+void applyUpdate(nav_msgs::OccupancyGrid& map, const map_msgs::OccupancyGridUpdate& update);
 
 /// The grid as a map message (free 0, occupied 100, unknown -1), header left to the caller.
 void toMsg(const OccupancyGrid& grid, nav_msgs::OccupancyGrid& msg);
