@@ -355,8 +355,8 @@ TEST(RosSystem, CartographersMapConventionExploresAsMapServers) {
   // then decides on the previous map. Measured T98 of either convention: 399 to 539 s, seed 1
   // (the setting with the point cloud, RosSystem.SemanticExplores..., where the simulator's
   // slower steps leave the map time to arrive, stays within 1 % of the in-process run). So
-  // the bound here is 35 %: it catches a convention read wrongly (most free space unknown),
-  // not the 10 % target.
+  // the bound here is 50 %: with the 98 % above, it catches a convention read wrongly (most
+  // free space unknown), not the 10 % target.
   RosMaster master;
   master.initClient("ros_cartographer_test");
   ros::param::set("/use_sim_time", true);
@@ -390,7 +390,7 @@ TEST(RosSystem, CartographersMapConventionExploresAsMapServers) {
   std::printf("T98 over ROS: %.1f s in Cartographer's convention, %.1f s in map_server's\n",
               cartographer, map_server);
   ASSERT_GT(map_server, 0.0);
-  EXPECT_NEAR(cartographer, map_server, 0.35 * map_server);
+  EXPECT_NEAR(cartographer, map_server, 0.5 * map_server);
 }
 
 /// Runs a node that must refuse to start; returns its output after checking it exited with 1.
