@@ -90,19 +90,21 @@ struct ExploreNodeParams {
     p.progress_timeout_s = typedParam(pn, "progress_timeout_s", p.progress_timeout_s);
     p.map_source = typedParam(pn, "map_source", p.map_source);
     p.map_convention = MapConvention::named(p.map_source);
-    // Former names, whole percentages.
-    for (const auto& [old_name, field] :
-         {std::pair<const char*, double*>{"free_percent", &p.map_convention.free_max},
-          std::pair<const char*, double*>{"occupied_percent", &p.map_convention.occupied_min}}) {
-      if (!pn.hasParam(old_name)) continue;
-      *field = typedParam(pn, old_name, 0);
-      p.warnings.push_back(
-          std::string("~") + old_name + " is a former name: use ~" +
-          (field == &p.map_convention.free_max ? "free_threshold" : "occupied_threshold"));
+    // Each threshold by its name, or by its former name (a whole percentage) with a warning.
+    struct Threshold {
+      const char* name;
+      const char* former;
+      double* value;
+    };
+    for (const Threshold& t :
+         {Threshold{"free_threshold", "free_percent", &p.map_convention.free_max},
+          Threshold{"occupied_threshold", "occupied_percent", &p.map_convention.occupied_min}}) {
+      if (pn.hasParam(t.former)) {
+        *t.value = typedParam(pn, t.former, 0);
+        p.warnings.push_back(std::string("~") + t.former + " is a former name: use ~" + t.name);
+      }
+      *t.value = typedParam(pn, t.name, *t.value);
     }
-    p.map_convention.free_max = typedParam(pn, "free_threshold", p.map_convention.free_max);
-    p.map_convention.occupied_min =
-        typedParam(pn, "occupied_threshold", p.map_convention.occupied_min);
     p.marker_period_s = typedParam(pn, "marker_period_s", p.marker_period_s);
     p.plan_topic = typedParam(pn, "plan_topic", p.plan_topic);
     p.transform_tolerance_s = typedParam(pn, "transform_tolerance", p.transform_tolerance_s);
@@ -274,13 +276,12 @@ class ExploreNode {
   }
 
   void insertPointCloud(const sensor_msgs::PointCloud2& cloud) {
-    const sensor_msgs::PointCloud2* msg = &cloud;
     Pose2 base;
     geometry_msgs::TransformStamped sensor;
     try {
       base = toPose2(
-          tf_.lookupTransform(params_.map_frame, params_.base_frame, msg->header.stamp).transform);
-      sensor = tf_.lookupTransform(params_.map_frame, msg->header.frame_id, msg->header.stamp);
+          tf_.lookupTransform(params_.map_frame, params_.base_frame, cloud.header.stamp).transform);
+      sensor = tf_.lookupTransform(params_.map_frame, cloud.header.frame_id, cloud.header.stamp);
     } catch (const tf2::TransformException& e) {
       ROS_WARN_THROTTLE(60.0, "point cloud skipped: %s", e.what());
       return;
@@ -293,8 +294,8 @@ class ExploreNode {
         Eigen::Quaternionf(static_cast<float>(q.w), static_cast<float>(q.x),
                            static_cast<float>(q.y), static_cast<float>(q.z));
     scratch_points_.clear();
-    scratch_points_.reserve(static_cast<std::size_t>(msg->width) * msg->height);
-    sensor_msgs::PointCloud2ConstIterator<float> x(*msg, "x"), y(*msg, "y"), z(*msg, "z");
+    scratch_points_.reserve(static_cast<std::size_t>(cloud.width) * cloud.height);
+    sensor_msgs::PointCloud2ConstIterator<float> x(cloud, "x"), y(cloud, "y"), z(cloud, "z");
     for (; x != x.end(); ++x, ++y, ++z) scratch_points_.push_back(T * Eigen::Vector3f(*x, *y, *z));
     cloud_.insert(scratch_points_);
     cloud_top_m_ = std::max(cloud_top_m_, static_cast<double>(tr.z));

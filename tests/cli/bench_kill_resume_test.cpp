@@ -30,6 +30,7 @@
 #include <thread>
 #include <vector>
 
+#include "../support/temp_dir.hpp"
 #include "roomscout/experiment/result_record.hpp"
 
 extern char** environ;
@@ -51,12 +52,7 @@ struct Outcome {
   double seconds = 0.0;
 };
 
-std::string readText(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using roomscout::test::readText;
 
 class BenchKillResumeTest : public ::testing::Test {
  protected:

@@ -26,12 +26,7 @@ using namespace roomscout;
 
 namespace {
 
-std::string readText(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using roomscout::test::readText;
 
 /// Every option a config file of either kind may set, by "group.name", with its default
 /// written as YAML.

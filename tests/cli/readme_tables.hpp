@@ -12,7 +12,6 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <functional>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -22,6 +21,7 @@
 #include <vector>
 
 #include "../support/run_command.hpp"
+#include "../support/temp_dir.hpp"
 
 namespace roomscout::test {
 
@@ -35,13 +35,6 @@ inline std::string trimmed(const std::string& text) {
   const auto first = text.find_first_not_of(" \n");
   if (first == std::string::npos) return "";
   return text.substr(first, text.find_last_not_of(" \n") - first + 1);
-}
-
-inline std::string readTextFile(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
 }
 
 /// The generated tables of `markdown`.
@@ -124,7 +117,7 @@ inline std::vector<TableEpisode> readTableCsv(const std::filesystem::path& path)
 inline std::vector<std::filesystem::path> readmeTableCsvs() {
   const std::filesystem::path source(ROOMSCOUT_SOURCE_DIR);
   std::set<std::filesystem::path> csvs;
-  for (const GeneratedTable& t : generatedTables(readTextFile(source / "README.md"))) {
+  for (const GeneratedTable& t : generatedTables(readText(source / "README.md"))) {
     std::stringstream words(t.command);
     std::string word;
     while (words >> word) {
@@ -168,8 +161,7 @@ inline void expectTheBinaryGivesTheEpisodes(const std::filesystem::path& csv,
       for (const std::string& n : names) text += (text.empty() ? "" : ",") + n;
       return text;
     };
-    const std::filesystem::path dir =
-        work / ("bench_" + std::to_string(std::hash<std::string>{}(setting)));
+    const std::filesystem::path dir = work / ("bench_" + setting);
     std::filesystem::create_directories(dir);
     std::string args = "bench --worlds " + joined(bench_worlds) + " --methods " + joined(methods) +
                        " --seeds " + std::to_string(seed) + "-" + std::to_string(seed) +

@@ -16,7 +16,7 @@ namespace {
 
 TEST(ReadmeTables, EachIsWhatItsCommandPrints) {
   const std::filesystem::path source(ROOMSCOUT_SOURCE_DIR);
-  const std::vector<GeneratedTable> tables = generatedTables(readTextFile(source / "README.md"));
+  const std::vector<GeneratedTable> tables = generatedTables(readText(source / "README.md"));
   ASSERT_GE(tables.size(), 2u) << "README.md: the method tables' markers are gone";
   const TempDir dir;
   for (const GeneratedTable& t : tables) {
