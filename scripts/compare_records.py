@@ -13,7 +13,7 @@ import argparse
 import json
 import sys
 
-TIMED = {"update_ms": ("median", "p95"), "map_stats": ("update_median_ms", "update_p95_ms")}
+TIMED = {"update_ms": ("median", "p95", "by_known_area"), "map_stats": ("update_median_ms", "update_p95_ms")}
 
 
 def load(path):

@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
-# Installs what is missing, builds Release, and explores the built-in medium_house (450 m²,
+# Installs what the roomscout command needs, builds it (Release, nothing else: scripts/test.sh
+# adds the tests, benchmarks and ROS nodes), and explores the built-in medium_house (450 m²,
 # 23 rooms) with the semantic method, writing its four maps under out/medium_house.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-scripts/setup.sh build
+scripts/setup.sh --demo build
 build/roomscout explore --world medium_house --method semantic --seed 1 --out out/medium_house
 cat <<'MAPS'
 The four maps, in one frame, are in out/medium_house/:

@@ -65,4 +65,37 @@ inline cv::Mat threeRoomsAndCorridor(cv::Mat* truth = nullptr) {
   return m;
 }
 
+/// A corridor 2 m wide along the bottom of a building `rooms` x 5 m long, rooms 4.9 m wide and
+/// 5.8 m deep above it, each with a 0.9 m door; `truth` gets one label per room, corridor
+/// last.
+inline cv::Mat roomRow(int rooms, cv::Mat* truth) {
+  const double length = rooms * 5.0 + 0.4;
+  cv::Mat m = canvas(length, 8.4);
+  const auto F = CellState::kFree;
+  box(m, 0.2, 0.2, length - 0.2, 2.2, F);
+  *truth = cv::Mat::zeros(m.size(), CV_32S);
+  (*truth)(cv::Rect(4, 4, m.cols - 8, 40)).setTo(rooms + 1);
+  for (int i = 0; i < rooms; ++i) {
+    const double x0 = 0.2 + i * 5.0;
+    box(m, x0, 2.3, x0 + 4.9, 8.2, F);
+    box(m, x0 + 2.0, 2.2, x0 + 2.9, 2.3, F);
+    const cv::Rect room(static_cast<int>(std::lround(x0 / kRes)), 46, 98, 118);
+    (*truth)(room).setTo(i + 1);
+  }
+  truth->setTo(0, m != v(F));
+  return m;
+}
+
+/// The map as a robot driving along +x sees it: everything up to x_m, the rest unknown.
+inline cv::Mat seenUpTo(const cv::Mat& full, double x_m) {
+  cv::Mat seen(full.size(), CV_8U, cv::Scalar(v(CellState::kUnknown)));
+  const int cols = std::min(full.cols, static_cast<int>(x_m / kRes));
+  if (cols > 0) full.colRange(0, cols).copyTo(seen.colRange(0, cols));
+  return seen;
+}
+
+inline GridGeometry geometryOf(const cv::Mat& states, const Vec2& origin = Vec2::Zero()) {
+  return GridGeometry(origin, kRes, states.cols, states.rows);
+}
+
 }  // namespace roomscout::test

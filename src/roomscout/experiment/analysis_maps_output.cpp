@@ -2,7 +2,9 @@
 
 #include "roomscout/io/semantic_io.hpp"
 #include "roomscout/io/topology_io.hpp"
+#include "roomscout/maps/room_segmenter.hpp"
 #include "roomscout/maps/segmentation_score.hpp"
+#include "roomscout/maps/topology_builder.hpp"
 
 namespace roomscout::experiment {
 
@@ -28,23 +30,39 @@ nlohmann::json writeAnalysisMaps(const std::filesystem::path& directory,
                              {{"files", {"topology.json", "topology.png"}},
                               {"nodes", topo.nodes().size()},
                               {"edges", topo.edges().size()},
-                              {"updates", topological.updateTimes_ms().size()}}},
+                              {"updates", topological.updateTimes_ms().size()},
+                              {"full_updates", topological.fullUpdates()},
+                              {"window_updates", topological.windowUpdates()}}},
                             {"semantic",
                              {{"files", {"semantic.json", "semantic.png", "semantic_labels.png"}},
                               {"regions", rooms.regions().size()},
-                              {"updates", semantic.updateTimes_ms().size()}}}};
+                              {"updates", semantic.updateTimes_ms().size()},
+                              {"full_updates", semantic.fullUpdates()},
+                              {"window_updates", semantic.windowUpdates()}}}};
   if (world != nullptr && world->hasRooms()) {
-    const SegmentationScore s =
-        scoreSegmentation(rooms.labels(), groundTruthRoomLabels(grid, *world));
-    extra["ground_truth_score"] = {{"rooms", s.ground_truth_rooms},
-                                   {"segments", s.segments},
-                                   {"recall", s.recall},
-                                   {"precision", s.precision},
-                                   {"pooled_recall", s.pooled_recall},
-                                   {"pooled_precision", s.pooled_precision},
-                                   {"iou", s.iou}};
+    auto toJson = [](const SegmentationScore& s) {
+      return nlohmann::json{{"rooms", s.ground_truth_rooms},
+                            {"segments", s.segments},
+                            {"recall", s.recall},
+                            {"precision", s.precision},
+                            {"pooled_recall", s.pooled_recall},
+                            {"pooled_precision", s.pooled_precision},
+                            {"iou", s.iou}};
+    };
+    const cv::Mat truth = groundTruthRoomLabels(grid, *world);
+    extra["ground_truth_score"] = toJson(scoreSegmentation(rooms.labels(), truth));
     summary["semantic"]["ground_truth_score"] = extra["ground_truth_score"];
+    // The rooms were updated where the map changed; a segmentation of the final map from
+    // scratch, scored the same way, shows what that costs.
+    const RoomSegmenter from_scratch(semantic.options().segmentation);
+    summary["semantic"]["from_scratch_score"] =
+        toJson(scoreSegmentation(from_scratch.segment(grid).labels, truth));
   }
+  // The skeleton was updated where the map changed; the graph of the final map built from
+  // scratch, for comparison.
+  const TopologicalMap scratch = TopologyBuilder(topological.options().topology).build(grid);
+  summary["topological"]["from_scratch"] = {{"nodes", scratch.nodes().size()},
+                                            {"edges", scratch.edges().size()}};
   io::writeTopologicalMap(directory, topo, grid);
   io::writeSemanticMap(directory, rooms, grid, extra);
   return summary;

@@ -18,7 +18,15 @@ nlohmann::json optionalNumber(const std::optional<double>& v) {
 }
 
 nlohmann::json timing(const sim::TimingStats& s) {
-  return {{"median", s.median_ms}, {"p95", s.p95_ms}, {"count", s.count}};
+  nlohmann::json t = {{"median", s.median_ms}, {"p95", s.p95_ms}, {"count", s.count}};
+  if (!s.by_known_area.empty()) {
+    nlohmann::json bins = nlohmann::json::array();
+    for (const sim::TimingStats::AreaBin& b : s.by_known_area)
+      bins.push_back({b.known_max_m2, b.count, b.median_ms, b.p95_ms});
+    t["by_known_area_columns"] = {"known_max_m2", "count", "median", "p95"};
+    t["by_known_area"] = std::move(bins);
+  }
+  return t;
 }
 
 std::string trajectoryCsv(const sim::EpisodeResult& result) {

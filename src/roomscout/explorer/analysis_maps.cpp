@@ -3,6 +3,8 @@
 #include <chrono>
 #include <cmath>
 
+#include <opencv2/core.hpp>
+
 #include "roomscout/core/errors.hpp"
 #include "roomscout/maps/grid_image.hpp"
 
@@ -12,6 +14,8 @@ void AnalysisMapsOptions::validate() const {
   if (!(period_s > 0.0)) throw OptionError("maps.period_s must be > 0");
   if (!(min_new_area_m2 >= 0.0)) throw OptionError("maps.min_new_area_m2 must be >= 0");
   if (topology_every < 1) throw OptionError("maps.topology_every must be >= 1");
+  rooms.validate();
+  skeleton.validate();
   segmentation.validate();
   topology.validate();
 }
@@ -25,6 +29,27 @@ std::vector<ParameterRef> AnalysisMapsOptions::parameters() {
       {"topology_every", &topology_every,
        "rebuild the topological map on every n-th due update only (always on the first and at the "
        "end); no strategy reads it, so its final map is the same for any n"},
+      {"rooms_margin_m", &rooms.margin_m,
+       "an update segments again only the rooms within this distance of a changed cell, in a "
+       "window this much wider than them [m]"},
+      {"rooms_reach_m", &rooms.reach_m,
+       "... taken whole as far as they lie within this distance of a changed cell; a room "
+       "reaching farther keeps its cells beyond [m]"},
+      {"rooms_full_share", &rooms.full_share,
+       "... and the whole map when that window would cover more than this share of the known "
+       "map's bounding box (0: always the whole map)"},
+      {"rooms_min_overlap_m2", &rooms.min_overlap_m2,
+       "a room reaching beyond the window is merged with another when one window segment "
+       "covers this much of each, or, split by the window, makes the whole map be segmented "
+       "[m^2]"},
+      {"rooms_full_interval", &rooms.full_interval,
+       "... though not within this many updates of the last time [updates]"},
+      {"skeleton_margin_m", &skeleton.margin_m,
+       "an update rebuilds the skeleton within this distance of a changed cell (more where the "
+       "free space is wider than twice this), from a window twice as far [m]"},
+      {"skeleton_full_share", &skeleton.full_share,
+       "... and the whole map's when that window would cover more than this share of the known "
+       "map's bounding box (0: always the whole map)"},
   };
 }
 
@@ -34,8 +59,8 @@ AnalysisMap::AnalysisMap(AnalysisMapKind kind, const AnalysisMapsOptions& option
       options_(options),
       rooms_(kind == AnalysisMapKind::kTopological ? rooms : nullptr),
       worker_(worker != nullptr && worker->background() ? worker : nullptr),
-      segmenter_(options.segmentation),
-      builder_(options.topology) {
+      segmenter_(options.segmentation, options.rooms),
+      builder_(options.topology, options.skeleton) {
   options_.validate();
 }
 
@@ -45,6 +70,15 @@ AnalysisMap::~AnalysisMap() {
 
 std::string_view AnalysisMap::name() const {
   return kind_ == AnalysisMapKind::kSemantic ? "semantic" : "topological";
+}
+
+int AnalysisMap::fullUpdates() const {
+  return kind_ == AnalysisMapKind::kSemantic ? segmenter_.fullUpdates() : builder_.fullUpdates();
+}
+
+int AnalysisMap::windowUpdates() const {
+  return kind_ == AnalysisMapKind::kSemantic ? segmenter_.windowUpdates()
+                                             : builder_.windowUpdates();
 }
 
 const SemanticMap* AnalysisMap::semanticMap() const {
@@ -106,16 +140,19 @@ void AnalysisMap::build(const cv::Mat& states, const GridGeometry& geometry,
                         std::shared_ptr<const SemanticMap> rooms) {
   const auto t0 = std::chrono::steady_clock::now();
   if (kind_ == AnalysisMapKind::kSemantic) {
-    const RoomSegmentation seg = segmenter_.segment(states, geometry.resolution_m());
-    semantic_.update(geometry, seg.labels, states);
+    semantic_.update(geometry, segmenter_.update(states, geometry).labels, states);
   } else {
-    topology_ = builder_.build(states, geometry,
-                               rooms    ? rooms.get()
-                               : rooms_ ? rooms_->semanticMap()
-                                        : nullptr);
+    topology_ = builder_.update(states, geometry,
+                                rooms    ? rooms.get()
+                                : rooms_ ? rooms_->semanticMap()
+                                         : nullptr);
   }
   update_ms_.push_back(
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+  const double res = geometry.resolution_m();
+  update_known_m2_.push_back(
+      static_cast<double>(cv::countNonZero(states != static_cast<int>(CellState::kUnknown))) * res *
+      res);
 }
 
 }  // namespace roomscout

@@ -19,6 +19,8 @@
 #include "roomscout/core/occupancy_grid.hpp"
 #include "roomscout/core/parameters.hpp"
 #include "roomscout/explorer/map_worker.hpp"
+#include "roomscout/maps/incremental_rooms.hpp"
+#include "roomscout/maps/incremental_topology.hpp"
 #include "roomscout/maps/room_segmenter.hpp"
 #include "roomscout/maps/semantic_map.hpp"
 #include "roomscout/maps/topological_map.hpp"
@@ -33,11 +35,13 @@ struct AnalysisMapsOptions {
   double period_s = 1.0;
   double min_new_area_m2 = 2.0;
   int topology_every = 1;
+  IncrementalRoomsOptions rooms;
+  IncrementalTopologyOptions skeleton;
   RoomSegmenterOptions segmentation;
   TopologyBuilderOptions topology;
   void validate() const;
-  /// The schedule options (period_s, min_new_area_m2, topology_every); the algorithms have
-  /// their own groups.
+  /// The schedule options (period_s, min_new_area_m2, topology_every) and the reach of the
+  /// updates (rooms_*, skeleton_*); the algorithms have their own groups.
   std::vector<ParameterRef> parameters();
 };
 
@@ -62,12 +66,20 @@ class AnalysisMap {
   void finish(const OccupancyGrid& grid, bool grid_changed = true);
   /// Wall-clock durations of its updates so far [ms] (with a worker: after finish()).
   const std::vector<double>& updateTimes_ms() const { return update_ms_; }
+  /// The area the grid knew (free or occupied) at each of those updates [m^2].
+  const std::vector<double>& updateKnownArea_m2() const { return update_known_m2_; }
   /// The rooms (semantic kind only; nullptr for the topological kind). With a worker, up to
   /// date only after finish().
   const SemanticMap* semanticMap() const;
   /// The skeleton graph (topological kind; empty for the semantic kind). With a worker, up to
   /// date only after finish().
   const TopologicalMap& topologicalMap() const { return topology_; }
+  const AnalysisMapsOptions& options() const { return options_; }
+  /// Updates that rebuilt the whole map (the first among them), and those that rebuilt a
+  /// window around what changed (IncrementalRoomSegmenter, IncrementalTopologyBuilder). With
+  /// a worker, final only after finish().
+  int fullUpdates() const;
+  int windowUpdates() const;
 
  private:
   void update(const OccupancyGrid& grid);
@@ -79,13 +91,14 @@ class AnalysisMap {
   AnalysisMapsOptions options_;
   const AnalysisMap* rooms_;
   MapWorker* worker_;  ///< null unless it has a thread: a worker without one changes nothing
-  RoomSegmenter segmenter_;
-  TopologyBuilder builder_;
+  IncrementalRoomSegmenter segmenter_;
+  IncrementalTopologyBuilder builder_;
   SemanticMap semantic_;
   TopologicalMap topology_;
   cv::Mat states_;                 ///< the grid's cell states at the last update (buffer reused)
   std::vector<double> update_ms_;  ///< written by build()
-  std::size_t updates_ = 0;        ///< updates decided so far (build() may still be behind)
+  std::vector<double> update_known_m2_;  ///< written by build()
+  std::size_t updates_ = 0;              ///< updates decided so far (build() may still be behind)
   double next_update_s_ = 0.0;
   bool changed_ = false;
   std::size_t known_at_update_ = 0;

@@ -1,6 +1,7 @@
 #include "roomscout/maps/grid_image.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include <opencv2/imgproc.hpp>
 
@@ -23,6 +24,26 @@ std::size_t knownCellCount(const OccupancyGrid& grid) {
   return grid.geometry().cellCount() == 0
              ? 0
              : static_cast<std::size_t>(cv::countNonZero(stateView(grid)));
+}
+
+std::optional<cv::Point> cellOffset(const GridGeometry& before, const GridGeometry& now) {
+  const double res = now.resolution_m();
+  if (std::abs(res - before.resolution_m()) > 1e-9) return std::nullopt;
+  const double fx = (now.origin_m().x() - before.origin_m().x()) / res;
+  const double fy = (now.origin_m().y() - before.origin_m().y()) / res;
+  const double dx = std::round(fx), dy = std::round(fy);
+  if (std::abs(fx - dx) > 1e-3 || std::abs(fy - dy) > 1e-3 || std::abs(dx) > 1e8 ||
+      std::abs(dy) > 1e8)
+    return std::nullopt;
+  return cv::Point(static_cast<int>(dx), static_cast<int>(dy));
+}
+
+cv::Mat shifted(const cv::Mat& image, cv::Point offset, cv::Size size, const cv::Scalar& fill) {
+  cv::Mat out(size, image.type(), fill);
+  const cv::Rect dst = cv::Rect(-offset.x, -offset.y, image.cols, image.rows) &
+                       cv::Rect(0, 0, size.width, size.height);
+  if (!dst.empty()) image(dst + offset).copyTo(out(dst));
+  return out;
 }
 
 cv::Rect knownBounds(const cv::Mat& states, int margin) {

@@ -2,6 +2,8 @@
 // Occupancy grids as OpenCV images for the map analysis (topology, rooms). Images keep the
 // grid's orientation: image row y is grid row y (row 0 at the bottom of the map).
 
+#include <optional>
+
 #include <opencv2/core/mat.hpp>
 
 #include "roomscout/core/occupancy_grid.hpp"
@@ -17,6 +19,15 @@ cv::Mat stateView(const OccupancyGrid& grid);
 cv::Mat stateImage(const OccupancyGrid& grid);
 /// The same into `image`, reusing its buffer when it already has the grid's size.
 void stateImage(const OccupancyGrid& grid, cv::Mat& image);
+
+/// Where a grid of geometry `now` lies on one of geometry `before`: cell (x, y) of `now` is
+/// cell (x + offset.x, y + offset.y) of `before`. Empty when no whole-cell offset maps one onto
+/// the other (another resolution, an origin moved by a fraction of a cell).
+std::optional<cv::Point> cellOffset(const GridGeometry& before, const GridGeometry& now);
+
+/// `image` laid onto another grid: a new image of `size` whose pixel p is pixel p + offset of
+/// `image`, and `fill` where `image` has none.
+cv::Mat shifted(const cv::Mat& image, cv::Point offset, cv::Size size, const cv::Scalar& fill);
 
 /// Number of cells the grid knows (free or occupied).
 std::size_t knownCellCount(const OccupancyGrid& grid);

@@ -90,22 +90,27 @@ TopologicalMap TopologyBuilder::build(const cv::Mat& states, const GridGeometry&
     throw InvalidArgument("TopologyBuilder: states must be CV_8U of the geometry's size");
   }
   if (states.empty()) return TopologicalMap(geometry, {}, {});
-  const double res = geometry.resolution_m();
   // Work on the known part only (a partial map is mostly unknown); positions are in metres.
   const cv::Rect known = maps::knownBounds(states, 2);
   if (known.empty()) return TopologicalMap(geometry, {}, {});
-  if (known.size() != states.size()) {
-    const Vec2 origin = geometry.origin_m() + Vec2(known.x, known.y) * res;
-    const TopologicalMap crop = build(
-        states(known).clone(), GridGeometry(origin, res, known.width, known.height), semantic);
-    return TopologicalMap(geometry, crop.nodes(), crop.edges());
-  }
+  const double res = geometry.resolution_m();
+  const Vec2 origin = geometry.origin_m() + Vec2(known.x, known.y) * res;
+  const cv::Mat crop = states(known);
+  const TopologicalMap graph_of_crop = graph(
+      skeleton(crop, res), crop, GridGeometry(origin, res, known.width, known.height), semantic);
+  return TopologicalMap(geometry, graph_of_crop.nodes(), graph_of_crop.edges());
+}
 
+TopologyBuilder::Skeleton TopologyBuilder::skeleton(const cv::Mat& states,
+                                                    double resolution_m) const {
+  if (states.type() != CV_8U) throw InvalidArgument("TopologyBuilder: states must be CV_8U");
+  const double res = resolution_m;
+  Skeleton out;
   // 1. Free space, furniture filled, opened, tiny patches dropped; one-pixel frame.
   cv::Mat space = maps::fillableFreeSpace(
       states, static_cast<int>(options_.furniture_max_area_m2 / (res * res)),
       static_cast<int>(std::ceil(options_.furniture_max_extent_m / res)));
-  const cv::Mat filled = space.clone();  // unknown cells in here are enclosed, not frontiers
+  out.filled = space.clone();  // unknown cells in here are enclosed, not frontiers
   const int r = static_cast<int>(std::lround(options_.opening_radius_m / res));
   if (r > 0) {
     const cv::Mat kernel = cv::getStructuringElement(cv::MORPH_ELLIPSE, {2 * r + 1, 2 * r + 1});
@@ -122,11 +127,25 @@ TopologicalMap TopologyBuilder::build(const cv::Mat& states, const GridGeometry&
     }
   }
   cv::copyMakeBorder(space, space, 1, 1, 1, 1, cv::BORDER_CONSTANT, 0);
-  cv::Mat clearance;
-  cv::distanceTransform(space, clearance, cv::DIST_L2, cv::DIST_MASK_PRECISE, CV_32F);
-
+  cv::distanceTransform(space, out.clearance, cv::DIST_L2, cv::DIST_MASK_PRECISE, CV_32F);
   // 2. Skeleton.
-  const cv::Mat skel = maps::thinZhangSuen(space);
+  out.skel = maps::thinZhangSuen(space);
+  return out;
+}
+
+TopologicalMap TopologyBuilder::graph(const Skeleton& skeleton, const cv::Mat& states,
+                                      const GridGeometry& geometry,
+                                      const SemanticMap* semantic) const {
+  if (states.type() != CV_8U || states.rows != geometry.height() ||
+      states.cols != geometry.width() || skeleton.skel.rows != states.rows + 2 ||
+      skeleton.skel.cols != states.cols + 2 || skeleton.clearance.size() != skeleton.skel.size() ||
+      skeleton.filled.size() != states.size()) {
+    throw InvalidArgument("TopologyBuilder: skeleton and states must be of the geometry's size");
+  }
+  const double res = geometry.resolution_m();
+  const cv::Mat& skel = skeleton.skel;
+  const cv::Mat& clearance = skeleton.clearance;
+  const cv::Mat& filled = skeleton.filled;
   const int w = skel.cols, h = skel.rows;
   auto on = [&](int x, int y) {
     return x >= 0 && y >= 0 && x < w && y < h && skel.ptr<std::uint8_t>(y)[x] != 0;

@@ -43,6 +43,19 @@ class TopologyBuilder final {
                        const SemanticMap* semantic) const;
   TopologicalMap build(const OccupancyGrid& grid, const SemanticMap* semantic = nullptr) const;
 
+  /// build() in two steps, so that a caller can keep the images and redo parts of them
+  /// (IncrementalTopologyBuilder). Images of one map, or of a window of one.
+  struct Skeleton {
+    cv::Mat filled;     ///< CV_8U, the states' size: free space with furniture filled (255)
+    cv::Mat skel;       ///< CV_8U, one cell larger on every side: 255 on the skeleton
+    cv::Mat clearance;  ///< CV_32F, as skel: distance to the nearest non-space cell [cells]
+  };
+  /// Step 1: the free space's skeleton and clearance (states: CV_8U CellState values).
+  Skeleton skeleton(const cv::Mat& states, double resolution_m) const;
+  /// Step 2: the graph along a skeleton of these states, on their geometry.
+  TopologicalMap graph(const Skeleton& skeleton, const cv::Mat& states,
+                       const GridGeometry& geometry, const SemanticMap* semantic) const;
+
  private:
   TopologyBuilderOptions options_;
 };

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <map>
 
 #include "roomscout/core/errors.hpp"
 #include "roomscout/sim/exploration_truth.hpp"
@@ -140,6 +141,22 @@ TimingStats TimingStats::of(std::vector<double> samples_ms) {
   return s;
 }
 
+TimingStats TimingStats::ofGrowth(const std::vector<double>& samples_ms,
+                                  const std::vector<double>& known_m2) {
+  TimingStats s = of(samples_ms);
+  std::map<int, std::vector<double>> bins;  // bin k: known area up to 250 * 2^k m^2
+  for (std::size_t i = 0; i < samples_ms.size() && i < known_m2.size(); ++i) {
+    int k = 0;
+    while (known_m2[i] > 250.0 * std::ldexp(1.0, k)) ++k;
+    bins[k].push_back(samples_ms[i]);
+  }
+  for (auto& [k, samples] : bins) {
+    const TimingStats b = of(std::move(samples));
+    s.by_known_area.push_back({250.0 * std::ldexp(1.0, k), b.count, b.median_ms, b.p95_ms});
+  }
+  return s;
+}
+
 namespace {
 
 using Clock = std::chrono::steady_clock;
@@ -245,7 +262,10 @@ EpisodeResult runEpisode(const WorldModel& world, EpisodeConfig config, Explorer
   explorer.finish(sim.publishedGrid());
   std::map<std::string, TimingStats> map_updates;
   for (const AnalysisMap* m : {explorer.roomMap(), explorer.skeletonMap()}) {
-    if (m != nullptr) map_updates[std::string(m->name())] = TimingStats::of(m->updateTimes_ms());
+    if (m != nullptr) {
+      map_updates[std::string(m->name())] =
+          TimingStats::ofGrowth(m->updateTimes_ms(), m->updateKnownArea_m2());
+    }
   }
   for (EpisodeObserver* o : observers) {
     o->onFinish(snapshot(true));

@@ -86,7 +86,19 @@ struct TimingStats {
   std::size_t count = 0;
   double median_ms = 0.0;
   double p95_ms = 0.0;
+  /// The updates of a map that grows, grouped by the area the map knew: bins up to 250,
+  /// 500, 1000, ... m^2 (each twice the last), empty bins left out. Filled by ofGrowth() only.
+  struct AreaBin {
+    double known_max_m2 = 0.0;
+    std::size_t count = 0;
+    double median_ms = 0.0;
+    double p95_ms = 0.0;
+  };
+  std::vector<AreaBin> by_known_area;
   static TimingStats of(std::vector<double> samples_ms);
+  /// of(samples_ms) with by_known_area; known_m2[i]: the area known at update i.
+  static TimingStats ofGrowth(const std::vector<double>& samples_ms,
+                              const std::vector<double>& known_m2);
 };
 
 struct CurveSample {
