@@ -129,13 +129,15 @@ TEST(RosSystem, SemanticExploresSmallHouseOverRosAsInProcess) {
   // the explorer at every step however long it takes (~sync_timeout_s 0), so the machine's
   // load cannot break it. The runs are still not identical: a goal and the explorer's report
   // that it caught up travel on different connections, so a new goal may start a step late,
-  // and a run diverges from there (scripts/ros_vs_inprocess.sh measures it). Without the
-  // lockstep the gap is 33-50 %.
+  // and a map may reach the explorer after its report; a run diverges from there
+  // (scripts/ros_vs_inprocess.sh measures it). Over 12 runs, quiet or beside a bench, T98 over
+  // ROS came within -12 % and +12 % of the in-process 437 s (386-491 s), with the rooms updated
+  // incrementally or whole alike; hence 20 %. Without the lockstep the gap is 33-50 %.
   const double t98 = truth["t98_s"].get<double>(), l98 = truth["l98_m"].get<double>();
   std::printf("in-process: T98 %.1f s, L98 %.1f m; over ROS: T98 %.1f s, L98 %.1f m, wall %.1f s\n",
               *reference.t98_s, *reference.l98_m, t98, l98, wall_s);
-  EXPECT_NEAR(t98, *reference.t98_s, 0.1 * *reference.t98_s);
-  EXPECT_NEAR(l98, *reference.l98_m, 0.1 * *reference.l98_m);
+  EXPECT_NEAR(t98, *reference.t98_s, 0.2 * *reference.t98_s);
+  EXPECT_NEAR(l98, *reference.l98_m, 0.2 * *reference.l98_m);
   for (const char* file :
        {"occupancy.pgm", "occupancy.yaml", "pointcloud.pcd", "topology.json", "topology.png",
         "semantic.json", "semantic.png", "semantic_labels.png"}) {
