@@ -3,8 +3,6 @@
 #include <chrono>
 #include <cmath>
 
-#include <opencv2/core.hpp>
-
 #include "roomscout/core/errors.hpp"
 #include "roomscout/maps/grid_image.hpp"
 
@@ -150,9 +148,7 @@ void AnalysisMap::build(const cv::Mat& states, const GridGeometry& geometry,
   update_ms_.push_back(
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
   const double res = geometry.resolution_m();
-  update_known_m2_.push_back(
-      static_cast<double>(cv::countNonZero(states != static_cast<int>(CellState::kUnknown))) * res *
-      res);
+  update_known_m2_.push_back(static_cast<double>(maps::knownCellCount(states)) * res * res);
 }
 
 }  // namespace roomscout

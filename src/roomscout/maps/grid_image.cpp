@@ -20,10 +20,23 @@ cv::Mat stateImage(const OccupancyGrid& grid) { return stateView(grid).clone(); 
 void stateImage(const OccupancyGrid& grid, cv::Mat& image) { stateView(grid).copyTo(image); }
 
 std::size_t knownCellCount(const OccupancyGrid& grid) {
+  return grid.geometry().cellCount() == 0 ? 0 : knownCellCount(stateView(grid));
+}
+
+std::size_t knownCellCount(const cv::Mat& states) {
   // Unknown is 0, free and occupied are not.
-  return grid.geometry().cellCount() == 0
-             ? 0
-             : static_cast<std::size_t>(cv::countNonZero(stateView(grid)));
+  return states.empty() ? 0 : static_cast<std::size_t>(cv::countNonZero(states));
+}
+
+cv::Rect grown(const cv::Rect& r, int by, const cv::Size& size) {
+  return cv::Rect(r.x - by, r.y - by, r.width + 2 * by, r.height + 2 * by) &
+         cv::Rect(0, 0, size.width, size.height);
+}
+
+cv::Rect changedBounds(const cv::Mat& before, const cv::Mat& now) {
+  cv::Mat changed;
+  cv::compare(now, before, changed, cv::CMP_NE);
+  return cv::boundingRect(changed);
 }
 
 std::optional<cv::Point> cellOffset(const GridGeometry& before, const GridGeometry& now) {
@@ -48,11 +61,10 @@ cv::Mat shifted(const cv::Mat& image, cv::Point offset, cv::Size size, const cv:
 
 cv::Rect knownBounds(const cv::Mat& states, int margin) {
   if (states.type() != CV_8U) throw InvalidArgument("knownBounds: states must be CV_8U");
-  const cv::Mat known = states != static_cast<std::uint8_t>(CellState::kUnknown);
-  const cv::Rect r = cv::boundingRect(known);
+  // Unknown is 0, free and occupied are not.
+  const cv::Rect r = cv::boundingRect(states);
   if (r.empty()) return {};
-  return cv::Rect(r.x - margin, r.y - margin, r.width + 2 * margin, r.height + 2 * margin) &
-         cv::Rect(0, 0, states.cols, states.rows);
+  return grown(r, margin, states.size());
 }
 
 cv::Mat fillableFreeSpace(const cv::Mat& states, int max_blob_area_px, int max_blob_extent_px) {

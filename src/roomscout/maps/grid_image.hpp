@@ -31,6 +31,15 @@ cv::Mat shifted(const cv::Mat& image, cv::Point offset, cv::Size size, const cv:
 
 /// Number of cells the grid knows (free or occupied).
 std::size_t knownCellCount(const OccupancyGrid& grid);
+/// The same for an image of CellState values (CV_8U).
+std::size_t knownCellCount(const cv::Mat& states);
+
+/// `r` grown by `by` cells on every side, clipped to an image of `size`.
+cv::Rect grown(const cv::Rect& r, int by, const cv::Size& size);
+
+/// The smallest rectangle holding every cell whose state differs between two images of the
+/// same size (CV_8U); empty when none does.
+cv::Rect changedBounds(const cv::Mat& before, const cv::Mat& now);
 
 /// The smallest rectangle holding every known (free or occupied) cell, grown by `margin`
 /// cells and clipped to the image; empty when nothing is known. Analysis runs on this crop:

@@ -12,14 +12,6 @@
 #include "roomscout/maps/grid_image.hpp"
 
 namespace roomscout {
-namespace {
-
-cv::Rect inflated(const cv::Rect& r, int by, const cv::Size& size) {
-  return cv::Rect(r.x - by, r.y - by, r.width + 2 * by, r.height + 2 * by) &
-         cv::Rect(0, 0, size.width, size.height);
-}
-
-}  // namespace
 
 void IncrementalRoomsOptions::validate() const {
   if (!(margin_m >= 0.0)) throw OptionError("maps.rooms_margin_m must be >= 0");
@@ -36,10 +28,14 @@ IncrementalRoomSegmenter::IncrementalRoomSegmenter(const RoomSegmenterOptions& s
   options_.validate();
 }
 
-void IncrementalRoomSegmenter::segmentAll(const cv::Mat& states, double resolution_m) {
+const RoomSegmentation& IncrementalRoomSegmenter::segmentAll(const cv::Mat& states,
+                                                             double resolution_m) {
   result_ = segmenter_.segment(states, resolution_m);
+  states.copyTo(states_);
+  renumber();
   ++full_updates_;
   updates_since_full_ = 0;
+  return result_;
 }
 
 bool IncrementalRoomSegmenter::alignTo(const GridGeometry& geometry) {
@@ -93,20 +89,13 @@ const RoomSegmentation& IncrementalRoomSegmenter::update(const cv::Mat& states,
   const double res = geometry.resolution_m();
   const bool aligned = alignTo(geometry);
   geometry_ = geometry;
-  if (!aligned) {
-    segmentAll(states, res);
-    states.copyTo(states_);
-    renumber();
-    return result_;
-  }
+  if (!aligned) return segmentAll(states, res);
 
-  cv::Mat changed;
-  cv::compare(states, states_, changed, cv::CMP_NE);
-  const cv::Rect diff = cv::boundingRect(changed);
+  const cv::Rect diff = maps::changedBounds(states_, states);
   if (diff.empty()) return result_;
   const int margin = static_cast<int>(std::ceil(options_.margin_m / res));
   const cv::Size size = states.size();
-  const cv::Rect near = inflated(diff, margin, size);
+  const cv::Rect near = maps::grown(diff, margin, size);
 
   // The rooms near a change, whole when they lie within reach_m of it, and the window that
   // holds them with a margin.
@@ -123,20 +112,16 @@ const RoomSegmentation& IncrementalRoomSegmenter::update(const cv::Mat& states,
       }
     }
   }
-  rooms_box &= inflated(diff, static_cast<int>(std::ceil(options_.reach_m / res)), size);
+  rooms_box &= maps::grown(diff, static_cast<int>(std::ceil(options_.reach_m / res)), size);
   // The window decides every room that lies in it with a margin, touched or not: a change can
   // merge a room with one beyond the margin (a door's neck compared with both rooms' cores).
   for (int l = 1; l <= result_.room_count; ++l) {
     if ((boxes_[l] & rooms_box) == boxes_[l]) touched[l] = 1;
   }
-  const cv::Rect window = inflated(rooms_box, margin, size);
+  const cv::Rect window = maps::grown(rooms_box, margin, size);
   const cv::Rect known = maps::knownBounds(states, 0);
-  if (static_cast<double>(window.area()) > options_.full_share * known.area()) {
-    segmentAll(states, res);
-    states.copyTo(states_);
-    renumber();
-    return result_;
-  }
+  if (static_cast<double>(window.area()) > options_.full_share * known.area())
+    return segmentAll(states, res);
 
   const RoomSegmentation local = segmenter_.segment(states(window), res);
   // Cells whose label the window decides: near a change, or in a touched room and at least
@@ -207,12 +192,7 @@ const RoomSegmentation& IncrementalRoomSegmenter::update(const cv::Mat& states,
       label_of[s] = old;
     }
   }
-  if (unsettled && updates_since_full_ >= options_.full_interval) {
-    segmentAll(states, res);
-    states.copyTo(states_);
-    renumber();
-    return result_;
-  }
+  if (unsettled && updates_since_full_ >= options_.full_interval) return segmentAll(states, res);
   ++window_updates_;
   ++updates_since_full_;
   for (int y = window.y; y < window.y + window.height; ++y) {

@@ -8,17 +8,18 @@
 // segmented on its own: the RoomSegmenter treats the window's edge as unknown space, as it
 // treats the edge of any partial map. Its labels replace the old ones on the changed cells and
 // on the touched rooms within reach only; every other room keeps its cells, and a room that
-// reaches farther (a long corridor) keeps its label beyond. A window segment takes the label of the
-// touched room it overlaps most, so rooms keep their labels (and a SemanticMap fed with them keeps
-// its ids) while the map grows. Every room that lies in the window with a margin is decided by it
-// too. A room the window cuts keeps its cells beyond the window: a window segment that joins it to
-// another room
-// (`min_overlap_m2` of each) merges the two everywhere, and a new segment split off it that
-// reaches the window's edge leaves the map unsettled (that edge may be the cause: a corridor
-// cut short ends in a room of its own). The whole map is segmented then, though not within
-// `full_interval` updates of the last time; until then the piece stays with the room. When the
-// window would cover more than `full_share` of the known map, or the grid moved by a fraction of a
-// cell, the whole map is segmented, as RoomSegmenter::segment does.
+// reaches farther (a long corridor) keeps its label beyond. A window segment takes the label of
+// the touched room it overlaps most, so rooms keep their labels (and a SemanticMap fed with
+// them keeps its ids) while the map grows. Every room that lies in the window with a margin is
+// decided by it too.
+//
+// A room the window cuts keeps its cells beyond the window: a window segment that joins it to
+// another room (`min_overlap_m2` of each) merges the two everywhere, and a new segment split
+// off it that reaches the window's edge leaves the map unsettled (that edge may be the cause: a
+// corridor cut short ends in a room of its own). The whole map is segmented then, though not
+// within `full_interval` updates of the last time; until then the piece stays with the room.
+// When the window would cover more than `full_share` of the known map, or the grid moved by a
+// fraction of a cell, the whole map is segmented, as RoomSegmenter::segment does.
 
 #include <vector>
 
@@ -56,7 +57,8 @@ class IncrementalRoomSegmenter {
   int windowUpdates() const { return window_updates_; }
 
  private:
-  void segmentAll(const cv::Mat& states, double resolution_m);
+  /// Segments the whole map, as the last update's.
+  const RoomSegmentation& segmentAll(const cv::Mat& states, double resolution_m);
   /// Puts the last update's states and labels into `geometry`'s frame; false when it cannot
   /// (no last update, another resolution, a shift by a fraction of a cell).
   bool alignTo(const GridGeometry& geometry);

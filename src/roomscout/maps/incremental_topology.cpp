@@ -10,14 +10,6 @@
 #include "roomscout/maps/grid_image.hpp"
 
 namespace roomscout {
-namespace {
-
-cv::Rect inflated(const cv::Rect& r, int by, const cv::Size& size) {
-  return cv::Rect(r.x - by, r.y - by, r.width + 2 * by, r.height + 2 * by) &
-         cv::Rect(0, 0, size.width, size.height);
-}
-
-}  // namespace
 
 void IncrementalTopologyOptions::validate() const {
   if (!(margin_m >= 0.0)) throw OptionError("maps.skeleton_margin_m must be >= 0");
@@ -58,18 +50,17 @@ TopologicalMap IncrementalTopologyBuilder::update(const cv::Mat& states,
   const double res = geometry.resolution_m();
   const bool aligned = alignTo(geometry);
   geometry_ = geometry;
+  // The known part of the map: the share a window may take of it, and where the graph is traced.
+  const cv::Rect known_cells = maps::knownBounds(states, 0);
   bool all = !aligned;
   if (aligned) {
-    cv::Mat changed;
-    cv::compare(states, states_, changed, cv::CMP_NE);
-    const cv::Rect diff = cv::boundingRect(changed);
+    const cv::Rect diff = maps::changedBounds(states_, states);
     // Free space wider than twice the margin takes a wider one: the window grows until its
     // widest free space fits (its clearance, seen from inside the window, is below the margin).
     for (int margin = static_cast<int>(std::ceil(options_.margin_m / res)); !diff.empty();) {
-      const cv::Rect keep = inflated(diff, margin, states.size());
-      const cv::Rect window = inflated(diff, 2 * margin, states.size());
-      if (static_cast<double>(window.area()) >
-          options_.full_share * maps::knownBounds(states, 0).area()) {
+      const cv::Rect keep = maps::grown(diff, margin, states.size());
+      const cv::Rect window = maps::grown(diff, 2 * margin, states.size());
+      if (static_cast<double>(window.area()) > options_.full_share * known_cells.area()) {
         all = true;
         break;
       }
@@ -96,9 +87,9 @@ TopologicalMap IncrementalTopologyBuilder::update(const cv::Mat& states,
     ++full_updates_;
   }
 
-  // The graph, traced on the known part of the map.
-  const cv::Rect known = maps::knownBounds(states, 2);
-  if (known.empty()) return TopologicalMap(geometry, {}, {});
+  // The graph, traced on the known part of the map (with TopologyBuilder::build's margin).
+  if (known_cells.empty()) return TopologicalMap(geometry, {}, {});
+  const cv::Rect known = maps::grown(known_cells, 2, states.size());
   const TopologyBuilder::Skeleton view{
       skeleton_.filled(known),
       skeleton_.skel(cv::Rect(known.x, known.y, known.width + 2, known.height + 2)),
